@@ -1,0 +1,62 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_PMP_CONSTRAINED_FAIRING_RESULT_H
+#define CGAL_PMP_CONSTRAINED_FAIRING_RESULT_H
+
+#include <cstddef>
+#include <string>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \ingroup PkgConstrainedFairingRef
+/// How a call to `constrained_fairing()` ended.
+enum class Constrained_fairing_status
+{
+  /// The relative energy decrease fell below the threshold, or no feasible direction
+  /// decreases the energy any more. The mesh holds the result.
+  CONVERGED,
+  /// `number_of_iterations` iterations were done. The mesh holds the last iterate.
+  ITERATION_LIMIT_REACHED,
+  /// The iteration callback returned `false`. The mesh holds the last iterate.
+  CANCELLED,
+  /// The input was rejected before anything was done; `message` says why. The mesh is untouched.
+  INVALID_INPUT,
+  /// The sparse linear solver could not factorize the Hessian approximation. The mesh is untouched.
+  LINEAR_SOLVER_FAILED
+};
+
+/// \ingroup PkgConstrainedFairingRef
+/// What `constrained_fairing()` did. Converts to `true` when the mesh holds a faired result:
+/// every vertex within the bound and the energy not higher than at the start.
+struct Constrained_fairing_result
+{
+  /// how the call ended
+  Constrained_fairing_status status = Constrained_fairing_status::INVALID_INPUT;
+  /// a human readable reason when `status` is a failure, empty otherwise
+  std::string message;
+  /// iterations done (one Cauchy step, then one Newton step in the default method)
+  std::size_t number_of_iterations = 0;
+  /// conjugate gradient iterations over all Newton steps: the main cost of the default method
+  std::size_t number_of_cg_iterations = 0;
+  /// the bending energy of the input mesh
+  double initial_energy = 0;
+  /// the bending energy of the output mesh
+  double final_energy = 0;
+  /// the largest Euclidean distance of an output vertex to its input position
+  double max_deviation = 0;
+
+  /// `true` when the mesh holds a faired result
+  explicit operator bool() const
+  {
+    return status == Constrained_fairing_status::CONVERGED ||
+           status == Constrained_fairing_status::ITERATION_LIMIT_REACHED ||
+           status == Constrained_fairing_status::CANCELLED;
+  }
+};
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_CONSTRAINED_FAIRING_RESULT_H

@@ -1,0 +1,220 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_PMP_CONSTRAINED_FAIRING_H
+#define CGAL_PMP_CONSTRAINED_FAIRING_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set_newton.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Feasible_set.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+struct Always_continue
+{
+  bool operator()(std::size_t, double) const { return true; }
+};
+
+using Default_sparse_linear_solver =
+  CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
+
+// The reason `tmesh` cannot be faired, or an empty string.
+template <typename TriangleMesh>
+std::string input_error(const TriangleMesh& tmesh, const Points& X0, double epsilon)
+{
+  if(!(std::isfinite(epsilon) && epsilon > 0))
+    return "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")";
+  if(num_vertices(tmesh) == 0 || num_faces(tmesh) == 0)
+    return "the mesh is empty";
+  if(!is_triangle_mesh(tmesh))
+    return "the mesh has faces that are not triangles";
+  if(!X0.allFinite())
+    return "the mesh has vertices with NaN or infinite coordinates";
+  return std::string();
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+
+/*!
+\ingroup PkgConstrainedFairingRef
+
+\brief fairs a triangle mesh while keeping every vertex within `epsilon` of its input position.
+
+Minimizes the discrete bending energy of Wardetzky et al. over all vertex positions `p` with
+`|p - p0| <= epsilon` (`p0` the input position), by the active set Newton method of
+K. Hildebrandt and K. Polthier, "Constraint-based fairing of surface meshes", SGP 2007.
+Noise and terracing go; nothing moves farther than `epsilon`, so setting `epsilon` to the
+accuracy of the data (a scanner's precision, the voxel size of an isosurface) keeps that
+accuracy. More iterations can only lower the energy. The connectivity is not changed; border
+vertices move like the others, and border edges do not contribute to the energy.
+
+The bound holds in double arithmetic with no tolerance: computed from the output and input
+points as doubles, `squared_distance(p, p0) <= epsilon * epsilon` and
+`sqrt(squared_distance(p, p0)) <= epsilon` (ball), or `|p.x() - p0.x()| <= epsilon` and
+likewise for `y` and `z` (box).
+
+The iterations stop when the energy decreased by less than `energy_decrease_threshold` per
+iteration, on average over the last three iterations, when no feasible direction decreases it,
+or after `number_of_iterations` iterations.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param tmesh a triangle mesh, consistently oriented, without degenerate triangles
+\param epsilon the largest distance a vertex may move, in the mesh's units
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones
+          listed below; the parameters not in %CGAL are in the namespace
+          `CGAL::Polygon_mesh_processing::constrained_fairing_parameters`
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+    \cgalParamType{a class model of `ReadWritePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of iterations; `0` leaves the mesh untouched}
+    \cgalParamType{unsigned int}
+    \cgalParamDefault{`100`}
+  \cgalParamNEnd
+  \cgalParamNBegin{sparse_linear_solver}
+    \cgalParamDescription{the solver that factorizes the Hessian approximation once and then
+                          solves with it (Newton method only)}
+    \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
+    \cgalParamDefault{`CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`}
+    \cgalParamExtra{`Eigen::CholmodSupernodalLLT` (Eigen's `CholmodSupport`) is about three
+                    times faster on large meshes.}
+  \cgalParamNEnd
+  \cgalParamNBegin{deviation_bound}
+    \cgalParamDescription{the shape of the set each vertex stays in: the ball of radius
+                          `epsilon`, or the paper's box of side `2 epsilon`}
+    \cgalParamType{`CGAL::Polygon_mesh_processing::Deviation_bound`}
+    \cgalParamDefault{`Deviation_bound::BALL`}
+  \cgalParamNEnd
+  \cgalParamNBegin{fairing_method}
+    \cgalParamDescription{the optimization method}
+    \cgalParamType{`CGAL::Polygon_mesh_processing::Constrained_fairing_method`}
+    \cgalParamDefault{`Constrained_fairing_method::ACTIVE_SET_NEWTON`}
+  \cgalParamNEnd
+  \cgalParamNBegin{energy_decrease_threshold}
+    \cgalParamDescription{the stopping threshold on the relative energy decrease per
+                          iteration (averaged over three iterations); `0` runs all
+                          `number_of_iterations` iterations}
+    \cgalParamType{double}
+    \cgalParamDefault{`1e-3`}
+  \cgalParamNEnd
+  \cgalParamNBegin{iteration_callback}
+    \cgalParamDescription{called after each iteration with its number (from 1) and the energy
+                          reached; returning `false` stops the run, and the mesh gets that
+                          iterate}
+    \cgalParamType{a callable `bool(std::size_t, double)`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\return a `Constrained_fairing_result`: the status, the iterations, the energy before and
+        after, the largest deviation reached. On `INVALID_INPUT` (empty mesh, non-triangle
+        faces, non-finite coordinates or `epsilon`, `epsilon <= 0`, degenerate triangles)
+        and `LINEAR_SOLVER_FAILED`, `tmesh` is left untouched.
+
+\warning The computation is done in double precision, and so is the guarantee.
+*/
+template <typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsilon,
+                                               const NamedParameters& np = parameters::default_values())
+{
+  namespace CF = internal::Constrained_fairing;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  using Point_3 = typename GT::Point_3;
+  using Sparse_linear_solver =
+    typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t, NamedParameters,
+                                                 CF::Default_sparse_linear_solver>::type;
+
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, tmesh));
+  CF::Solver_options options;
+  options.max_iterations = static_cast<std::size_t>(
+    choose_parameter(get_parameter(np, internal_np::number_of_iterations), options.max_iterations));
+  options.method = choose_parameter(get_parameter(np, CF::fairing_method), options.method);
+  options.threshold = choose_parameter(get_parameter(np, CF::energy_decrease_threshold), options.threshold);
+  const Deviation_bound shape = choose_parameter(get_parameter(np, CF::deviation_bound), Deviation_bound::BALL);
+  const auto callback = choose_parameter(get_parameter(np, CF::iteration_callback), CF::Always_continue());
+
+  // Vertices are numbered in the order `vertices(tmesh)` lists them.
+  auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh);
+  CF::Points X0(static_cast<Eigen::Index>(num_vertices(tmesh)), 3);
+  std::size_t n = 0;
+  for(auto v : vertices(tmesh))
+  {
+    put(vertex_index, v, n);
+    const Point_3& p = get(vpm, v);
+    X0.row(static_cast<Eigen::Index>(n++)) << CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z());
+  }
+
+  Constrained_fairing_result result;
+  result.message = CF::input_error(tmesh, X0, epsilon);
+  if(!result.message.empty())
+    return result;
+
+  const CF::Hinge_mesh mesh(tmesh, vertex_index);
+  const CF::Bending_energy energy(mesh);
+  result.initial_energy = result.final_energy = energy.value(X0);
+  if(!std::isfinite(result.initial_energy))
+  {
+    result.message = "the mesh has degenerate (zero area) triangles";
+    return result;
+  }
+  result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+  if(options.max_iterations == 0)
+    return result;
+
+  const CF::Feasible_set omega(X0, epsilon, shape);
+  CF::Points X = X0;
+  CF::Active_set_newton<Sparse_linear_solver> solver(
+    mesh, X0, omega, choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver)));
+  solver.run(X, options, callback, result);
+  if(!result)
+    return result;
+
+  result.max_deviation = omega.max_deviation(X);
+  for(auto v : vertices(tmesh))
+  {
+    const auto i = static_cast<std::size_t>(get(vertex_index, v));
+    put(vpm, v, Point_3(X(i, 0), X(i, 1), X(i, 2)));
+  }
+  return result;
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_CONSTRAINED_FAIRING_H

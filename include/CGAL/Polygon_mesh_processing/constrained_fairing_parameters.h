@@ -1,0 +1,88 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETERS_H
+#define CGAL_PMP_CONSTRAINED_FAIRING_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \ingroup PkgConstrainedFairingRef
+/// The shape of the set in which each vertex may move around its input position `p0`.
+enum class Deviation_bound
+{
+  /// `|p - p0| <= epsilon`, Euclidean distance: what "within epsilon" means. The default.
+  BALL,
+  /// `|p_i - p0_i| <= epsilon` for each coordinate `i`: the cube of side `2 epsilon` of
+  /// Hildebrandt and Polthier's paper. A vertex may then move up to `sqrt(3) epsilon`.
+  BOX
+};
+
+/// \ingroup PkgConstrainedFairingRef
+/// The optimization method of `constrained_fairing()`.
+enum class Constrained_fairing_method
+{
+  /// The active set Newton method of Hildebrandt and Polthier: a Cauchy step along the projected
+  /// gradient, then a Newton step on the free variables, preconditioned by a thin plate
+  /// Hessian factorized once. The default.
+  ACTIVE_SET_NEWTON,
+  /// Cauchy steps only: the explicit projected gradient descent that the paper compares
+  /// against. Cheaper per iteration, far more iterations on irregular meshes.
+  PROJECTED_GRADIENT
+};
+
+namespace internal {
+namespace Constrained_fairing {
+
+enum deviation_bound_t { deviation_bound };
+enum fairing_method_t { fairing_method };
+enum energy_decrease_threshold_t { energy_decrease_threshold };
+enum iteration_callback_t { iteration_callback };
+
+} // namespace Constrained_fairing
+} // namespace internal
+
+/// \ingroup PkgConstrainedFairingRef
+/// The named parameters of `constrained_fairing()` that %CGAL does not have. Each function
+/// starts a pack that chains %CGAL's own parameters as members, for example
+/// `deviation_bound(Deviation_bound::BOX).number_of_iterations(50)`; its two-argument
+/// overload appends to an existing pack, for example
+/// `deviation_bound(Deviation_bound::BOX, CGAL::parameters::number_of_iterations(50))`.
+namespace constrained_fairing_parameters {
+
+#define CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(NAME)                                          \
+  template <typename T>                                                                       \
+  Named_function_parameters<T, internal::Constrained_fairing::NAME##_t>                       \
+  NAME(const T& value)                                                                        \
+  {                                                                                           \
+    return Named_function_parameters<T, internal::Constrained_fairing::NAME##_t>(value);      \
+  }                                                                                           \
+  template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>                     \
+  Named_function_parameters<T, internal::Constrained_fairing::NAME##_t,                       \
+                            Named_function_parameters<NP_T, NP_Tag, NP_Base> >                \
+  NAME(const T& value, const Named_function_parameters<NP_T, NP_Tag, NP_Base>& base)          \
+  {                                                                                           \
+    return Named_function_parameters<T, internal::Constrained_fairing::NAME##_t,              \
+                                     Named_function_parameters<NP_T, NP_Tag, NP_Base> >(      \
+      value, base);                                                                           \
+  }
+
+/// the shape of the bound, a `Deviation_bound`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(deviation_bound)
+/// the optimization method, a `Constrained_fairing_method`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fairing_method)
+/// the stopping threshold on the relative energy decrease, a `double`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(energy_decrease_threshold)
+/// a callable `bool(std::size_t iteration, double energy)`, called after each iteration
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(iteration_callback)
+
+#undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
+
+} // namespace constrained_fairing_parameters
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_CONSTRAINED_FAIRING_PARAMETERS_H

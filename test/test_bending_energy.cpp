@@ -1,0 +1,156 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The bending energy of eq. (1): hand-computed values, zero on planes, invariance under rigid
+// motions and uniform scaling, and the analytic gradient against central finite differences.
+
+#include "test_support.h"
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <algorithm>
+#include <string>
+
+namespace CF = CGAL::Polygon_mesh_processing::internal::Constrained_fairing;
+using test::Mesh;
+using test::Point;
+
+struct Indexed
+{
+  CF::Points X;
+  CF::Hinge_mesh hinges;
+
+  explicit Indexed(const Mesh& m) : X(num_vertices(m), 3), hinges(m, get(boost::vertex_index, m))
+  {
+    for(auto v : vertices(m))
+    {
+      const Point& p = m.point(v);
+      X.row(v.idx()) << p.x(), p.y(), p.z();
+    }
+  }
+};
+
+// Two triangles on the edge (0,0,0)-(1,0,0), the first in the plane z = 0, the second opened
+// by `angle` from it: the dihedral angle between the faces is `angle`.
+Mesh hinge(double angle)
+{
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0));
+  const auto c = m.add_vertex(Point(0.5, 1, 0));
+  const auto d = m.add_vertex(Point(0.5, std::cos(angle), std::sin(angle)));
+  m.add_face(a, b, c);
+  m.add_face(b, a, d);
+  return m;
+}
+
+double energy(const Mesh& m)
+{
+  const Indexed x(m);
+  return CF::Bending_energy(x.hinges).value(x.X);
+}
+
+void check_hand_computed_hinges()
+{
+  // |e| = 1, both areas 1/2: E = 3 / (2 * 1) * cos(theta / 2)^2
+  CHECK(std::abs(energy(hinge(CGAL_PI / 3)) - 1.5 * 0.75) < 1e-14); // theta = 60 deg
+  CHECK(std::abs(energy(hinge(CGAL_PI / 2)) - 1.5 * 0.5) < 1e-14);  // theta = 90 deg
+  CHECK(energy(hinge(CGAL_PI)) < 1e-30);                             // flat
+  // The fold direction does not matter.
+  CHECK(std::abs(energy(hinge(CGAL_PI / 3)) - energy(hinge(-CGAL_PI / 3 + 2 * CGAL_PI))) < 1e-14);
+}
+
+void check_zero_on_planes()
+{
+  Mesh plane = test::plane_patch(12);
+  CHECK(energy(plane) == 0);
+  // Tilted and shifted: zero up to rounding.
+  for(auto v : vertices(plane))
+  {
+    const Point p = plane.point(v);
+    plane.point(v) = Point(p.x() + 3, 0.6 * p.y() + 0.8 * p.z() - 2, -0.8 * p.y() + 0.6 * p.z() + 1);
+  }
+  CHECK(energy(plane) < 1e-25);
+}
+
+void check_invariance()
+{
+  Mesh m = test::icosphere(2);
+  test::add_noise(m, 0.05, 1);
+  const double E = energy(m);
+  CHECK(E > 1);
+
+  // A rotation about an oblique axis, then a translation.
+  const CGAL::Aff_transformation_3<test::K> rotation(0.36, 0.48, -0.8, -0.8, 0.6, 0, 0.48, 0.64, 0.6);
+  for(double scale : {1.0, 1e-3, 250.0})
+  {
+    Mesh moved = m;
+    for(auto v : vertices(moved))
+      moved.point(v) = CGAL::ORIGIN + scale * (rotation(moved.point(v)) - CGAL::ORIGIN) + test::Vector(7, -3, 2);
+    CHECK(std::abs(energy(moved) - E) <= 1e-11 * E);
+  }
+}
+
+// The analytic gradient against central differences, on `count` coordinates spread over the
+// mesh (all of them if count is 0).
+void check_gradient(const Mesh& m, std::size_t count, const std::string& name)
+{
+  Indexed x(m);
+  const CF::Bending_energy E(x.hinges);
+  CF::Points G;
+  E.value_and_gradient(x.X, G);
+
+  const double h = 1e-6 * test::mean_edge_length(m);
+  const std::size_t n = static_cast<std::size_t>(x.X.size());
+  const std::size_t stride = count == 0 ? 1 : std::max<std::size_t>(1, n / count);
+  double error2 = 0, norm2 = 0;
+  for(std::size_t k = 0; k < n; k += stride)
+  {
+    double& c = x.X.data()[k];
+    const double c0 = c;
+    c = c0 + h;
+    const double up = E.value(x.X);
+    c = c0 - h;
+    const double down = E.value(x.X);
+    c = c0;
+    const double fd = (up - down) / (2 * h);
+    error2 += (fd - G.data()[k]) * (fd - G.data()[k]);
+    norm2 += G.data()[k] * G.data()[k];
+  }
+  const double relative_error = std::sqrt(error2 / norm2);
+  std::cout << "  gradient vs finite differences, " << name << ": relative error " << relative_error << std::endl;
+  CHECK(norm2 > 0);
+  CHECK(relative_error < 1e-6);
+}
+
+void check_gradients()
+{
+  Mesh sphere = test::icosphere(2);
+  test::add_noise(sphere, 0.05, 2);
+  check_gradient(sphere, 0, "noisy icosphere (closed)");
+
+  Mesh plane = test::plane_patch(10);
+  test::add_noise(plane, 0.03, 3);
+  check_gradient(plane, 0, "noisy plane patch (border)");
+
+  // Strong random perturbation: irregular, obtuse triangles, large dihedral angles.
+  Mesh rough = test::icosphere(1);
+  test::add_noise(rough, 0.25, 4);
+  check_gradient(rough, 0, "strongly perturbed icosphere");
+
+  Mesh real;
+  const std::string file = std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/elephant.off";
+  CHECK(CGAL::IO::read_polygon_mesh(file, real));
+  if(!is_empty(real))
+    check_gradient(real, 3000, "elephant.off (3000 coordinates)");
+}
+
+int main()
+{
+  check_hand_computed_hinges();
+  check_zero_on_planes();
+  check_invariance();
+  check_gradients();
+  return test::report("test_bending_energy");
+}
