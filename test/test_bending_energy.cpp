@@ -97,7 +97,7 @@ void check_invariance()
 void check_gradient(const Mesh& m, std::size_t count, const std::string& name)
 {
   Indexed x(m);
-  const CF::Bending_energy E(x.hinges);
+  CF::Bending_energy E(x.hinges);
   CF::Points G;
   E.value_and_gradient(x.X, G);
 

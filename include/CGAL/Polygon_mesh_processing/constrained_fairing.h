@@ -100,7 +100,7 @@ or after `number_of_iterations` iterations.
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of iterations; `0` leaves the mesh untouched}
     \cgalParamType{unsigned int}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{`200`}
   \cgalParamNEnd
   \cgalParamNBegin{sparse_linear_solver}
     \cgalParamDescription{the solver that factorizes the Hessian approximation once and then
@@ -186,7 +186,7 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
     return result;
 
   const CF::Hinge_mesh mesh(tmesh, vertex_index);
-  const CF::Bending_energy energy(mesh);
+  CF::Bending_energy energy(mesh);
   result.initial_energy = result.final_energy = energy.value(X0);
   if(!std::isfinite(result.initial_energy))
   {

@@ -33,7 +33,7 @@ namespace Constrained_fairing {
 struct Solver_options
 {
   Constrained_fairing_method method = Constrained_fairing_method::ACTIVE_SET_NEWTON;
-  std::size_t max_iterations = 100;
+  std::size_t max_iterations = 200;
   double threshold = 1e-3;
 };
 

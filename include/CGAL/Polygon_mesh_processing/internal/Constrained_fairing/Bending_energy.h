@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -31,95 +32,109 @@ public:
 
   // +infinity as soon as a hinge has a triangle of zero area: its normal is undefined, and a
   // line search must never step there.
-  double value(const Points& X) const
+  double value(const Points& X)
   {
+    compute_triangles(X);
     double energy = 0;
     for(const Hinge& h : m_mesh.hinges)
     {
-      const Stencil s(X, h);
-      if(!s.is_regular())
+      if(!is_regular(h))
         return std::numeric_limits<double>::infinity();
-      energy += s.energy();
+      energy += Hinge_terms(*this, X, h).energy();
     }
     return energy;
   }
 
-  // Returns the energy and writes its gradient to G (resized to X's shape).
-  double value_and_gradient(const Points& X, Points& G) const
+  // Returns the energy and writes its gradient to G (resized to X's shape). With
+  // L = |e|^2, S = l1 + l2 and C = |n1 - n2|^2 / 2 (l the doubled areas, n the unit normals
+  // of the triangles T1 = (p0, p1, p2) and T2 = (p1, p0, p3) of a hinge), a hinge contributes
+  // (3/2) L C / S, and
+  //   dE = (3/2) (C/S dL + L/S dC - L C/S^2 dS).
+  // For a vertex a of a triangle T with opposite edge vector o (previous vertex minus next
+  // one, in T's orientation) and n' the other triangle's normal:
+  //   d l / d a = n x o,    d <n, n'> / d a = (o . (n x n')) / l * n,    C = 1 - <n1, n2>.
+  // Both are linear in per-triangle quantities, so each hinge only adds to its triangles'
+  // coefficients (a scalar for dS, a vector for dC), and each triangle then spreads them to
+  // its vertices once.
+  double value_and_gradient(const Points& X, Points& G)
   {
+    compute_triangles(X);
+    const std::size_t nt = m_mesh.triangles.size();
+    m_area_coefficient.assign(nt, 0.);
+    m_normal_coefficient.setZero(static_cast<Eigen::Index>(nt), 3);
     G.setZero(X.rows(), 3);
+
     double energy = 0;
     for(const Hinge& h : m_mesh.hinges)
     {
-      const Stencil s(X, h);
-      if(!s.is_regular())
+      if(!is_regular(h))
       {
         G.setConstant(std::numeric_limits<double>::quiet_NaN());
         return std::numeric_limits<double>::infinity();
       }
-      energy += s.energy();
-      s.add_gradient(h, G);
+      const Hinge_terms t(*this, X, h);
+      energy += t.energy();
+      const double kS = -1.5 * t.L * t.C / (t.S * t.S), kC = 1.5 * t.L / t.S, kL = 1.5 * t.C / t.S;
+      const Eigen::Vector3d m = t.n1.cross(t.n2);
+      m_area_coefficient[h.f[0]] += kS;
+      m_area_coefficient[h.f[1]] += kS;
+      point(m_normal_coefficient, h.f[0]) += (kC / t.l1) * m;
+      point(m_normal_coefficient, h.f[1]) -= (kC / t.l2) * m;
+      point(G, h.v[0]) -= 2 * kL * t.e;
+      point(G, h.v[1]) += 2 * kL * t.e;
+    }
+
+    for(std::size_t f = 0; f < nt; ++f)
+    {
+      const auto& v = m_mesh.triangles[f];
+      const Eigen::Vector3d n = point(m_normal, f), a = point(m_normal_coefficient, f);
+      const double kS = m_area_coefficient[f];
+      for(int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3d o = point(X, v[(k + 2) % 3]) - point(X, v[(k + 1) % 3]);
+        point(G, v[k]) += kS * n.cross(o) - o.dot(a) * n;
+      }
     }
     return energy;
   }
 
 private:
-  // One hinge: the edge e = p1 - p0, the triangles T1 = (p0, p1, p2) and T2 = (p1, p0, p3),
-  // their doubled areas l1, l2 (the norms of their cross products) and unit normals n1, n2.
-  // With L = |e|^2, S = l1 + l2 = 2 A_e and C = |n1 - n2|^2 / 2 the hinge energy is
-  // (3/2) L C / S.
-  struct Stencil
+  // Doubled area l and unit normal n of every triangle.
+  void compute_triangles(const Points& X)
   {
-    Eigen::Vector3d p0, p1, p2, p3, e, n1, n2;
+    const std::size_t nt = m_mesh.triangles.size();
+    m_normal.resize(static_cast<Eigen::Index>(nt), 3);
+    m_doubled_area.resize(nt);
+    for(std::size_t f = 0; f < nt; ++f)
+    {
+      const auto& v = m_mesh.triangles[f];
+      const Eigen::Vector3d p0 = point(X, v[0]);
+      const Eigen::Vector3d N = (point(X, v[1]) - p0).cross(point(X, v[2]) - p0);
+      m_doubled_area[f] = N.norm();
+      point(m_normal, f) = N / m_doubled_area[f];
+    }
+  }
+
+  bool is_regular(const Hinge& h) const { return m_doubled_area[h.f[0]] > 0 && m_doubled_area[h.f[1]] > 0; }
+
+  struct Hinge_terms
+  {
+    Eigen::Vector3d e, n1, n2;
     double l1, l2, L, S, C;
 
-    Stencil(const Points& X, const Hinge& h)
-      : p0(point(X, h.v[0])), p1(point(X, h.v[1])), p2(point(X, h.v[2])), p3(point(X, h.v[3])),
-        e(p1 - p0)
-    {
-      n1 = e.cross(p2 - p0);
-      n2 = (p3 - p1).cross(e);
-      l1 = n1.norm();
-      l2 = n2.norm();
-      n1 /= l1;
-      n2 /= l2;
-      L = e.squaredNorm();
-      S = l1 + l2;
-      C = 0.5 * (n1 - n2).squaredNorm();
-    }
-
-    bool is_regular() const { return l1 > 0 && l2 > 0; }
+    Hinge_terms(const Bending_energy& E, const Points& X, const Hinge& h)
+      : e(point(X, h.v[1]) - point(X, h.v[0])), n1(point(E.m_normal, h.f[0])), n2(point(E.m_normal, h.f[1])),
+        l1(E.m_doubled_area[h.f[0]]), l2(E.m_doubled_area[h.f[1]]), L(e.squaredNorm()), S(l1 + l2),
+        C(0.5 * (n1 - n2).squaredNorm())
+    {}
 
     double energy() const { return 1.5 * L * C / S; }
-
-    // dE = (3/2) (C/S dL + L/S dC - L C/S^2 dS), where for a vertex a of triangle T with
-    // opposite edge vector o (the previous vertex minus the next one, in T's orientation):
-    //   d l / d a       = n x o                      (l: T's doubled area)
-    //   d <n1,n2> / d a = (o . (n x n')) / l * n     (n' the other triangle's normal)
-    // and C = 1 - <n1, n2>.
-    void add_gradient(const Hinge& h, Points& G) const
-    {
-      const Eigen::Vector3d m = n1.cross(n2);
-      const double kL = 1.5 * C / S, kC = 1.5 * L / S, kS = -1.5 * L * C / (S * S);
-
-      auto add_t1 = [&](std::size_t i, const Eigen::Vector3d& o) {
-        point(G, i) += kS * n1.cross(o) - kC * (o.dot(m) / l1) * n1;
-      };
-      auto add_t2 = [&](std::size_t i, const Eigen::Vector3d& o) {
-        point(G, i) += kS * n2.cross(o) + kC * (o.dot(m) / l2) * n2;
-      };
-      add_t1(h.v[0], p2 - p1);
-      add_t1(h.v[1], p0 - p2);
-      add_t1(h.v[2], p1 - p0);
-      add_t2(h.v[1], p3 - p0);
-      add_t2(h.v[0], p1 - p3);
-      add_t2(h.v[3], p0 - p1);
-      point(G, h.v[0]) -= 2 * kL * e;
-      point(G, h.v[1]) += 2 * kL * e;
-    }
   };
 
   const Hinge_mesh& m_mesh;
+  // per triangle, recomputed at each evaluation
+  Points m_normal, m_normal_coefficient;
+  std::vector<double> m_doubled_area, m_area_coefficient;
 };
 
 } // namespace Constrained_fairing

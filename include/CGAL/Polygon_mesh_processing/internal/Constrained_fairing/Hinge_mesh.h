@@ -10,12 +10,14 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -37,10 +39,11 @@ inline Eigen::Map<Eigen::Vector3d> point(Points& X, std::size_t i)
 }
 
 // An interior edge (v[0], v[1]) with its two triangles (v[0], v[1], v[2]) and (v[1], v[0], v[3]),
-// both oriented as in the mesh.
+// both oriented as in the mesh; f[0] and f[1] are their indices in Hinge_mesh::triangles.
 struct Hinge
 {
   std::array<std::size_t, 4> v;
+  std::array<std::size_t, 2> f;
 };
 
 // A border edge (v[0], v[1]) with its one triangle (v[0], v[1], v[2]).
@@ -64,18 +67,29 @@ struct Hinge_mesh
   Hinge_mesh(const TriangleMesh& tmesh, const VertexIndexMap& vertex_index)
     : number_of_vertices(static_cast<std::size_t>(num_vertices(tmesh)))
   {
+    using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
     auto id = [&](auto v) { return static_cast<std::size_t>(get(vertex_index, v)); };
 
-    triangles.reserve(static_cast<std::size_t>(num_faces(tmesh)));
-    for(auto f : faces(tmesh))
+    // Each triangle starts at its smallest vertex index, orientation kept.
+    std::vector<std::pair<std::array<std::size_t, 3>, face_descriptor> > sorted;
+    sorted.reserve(static_cast<std::size_t>(num_faces(tmesh)));
+    for(face_descriptor f : faces(tmesh))
     {
       const auto h = halfedge(f, tmesh);
       std::array<std::size_t, 3> t = {id(source(h, tmesh)), id(target(h, tmesh)),
                                       id(target(next(h, tmesh), tmesh))};
       std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-      triangles.push_back(t);
+      sorted.emplace_back(t, f);
     }
-    std::sort(triangles.begin(), triangles.end());
+    std::sort(sorted.begin(), sorted.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    auto face_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tmesh);
+    triangles.reserve(sorted.size());
+    for(const auto& t : sorted)
+    {
+      put(face_index, t.second, triangles.size());
+      triangles.push_back(t.first);
+    }
 
     for(auto e : edges(tmesh))
     {
@@ -90,7 +104,8 @@ struct Hinge_mesh
         continue;
       }
       const std::size_t d = id(target(next(opposite(h, tmesh), tmesh), tmesh));
-      hinges.push_back(a < b ? Hinge{{a, b, c, d}} : Hinge{{b, a, d, c}});
+      const std::size_t f = get(face_index, face(h, tmesh)), g = get(face_index, face(opposite(h, tmesh), tmesh));
+      hinges.push_back(a < b ? Hinge{{a, b, c, d}, {f, g}} : Hinge{{b, a, d, c}, {g, f}});
     }
     auto by_vertices = [](const auto& x, const auto& y) { return x.v < y.v; };
     std::sort(hinges.begin(), hinges.end(), by_vertices);

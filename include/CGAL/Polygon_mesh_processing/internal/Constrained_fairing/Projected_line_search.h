@@ -30,7 +30,7 @@ public:
   // returns true; `step()`, `energy()` and `point()` then describe the accepted point.
   template <typename Condition>
   bool run(const Points& x, const Points& v, double t0, const Feasible_set& omega,
-           const Bending_energy& energy, const Condition& holds)
+           Bending_energy& energy, const Condition& holds)
   {
     double t = t0;
     if(try_step(x, v, t, omega, energy, holds))
@@ -65,7 +65,7 @@ public:
 private:
   template <typename Condition>
   bool try_step(const Points& x, const Points& v, double t, const Feasible_set& omega,
-                const Bending_energy& energy, const Condition& holds)
+                Bending_energy& energy, const Condition& holds)
   {
     m_trial.noalias() = x + t * v;
     omega.project(m_trial);

@@ -22,8 +22,12 @@ namespace Constrained_fairing {
 class Reduced_newton_direction
 {
 public:
-  // The Newton direction only has to be good, not exact: the line search corrects its length.
-  static constexpr int max_iterations = 10;
+  // S M^-1 S models the energy only roughly once many vertices sit on their bounds, so
+  // solving the model better does not pay: on the 37 k vertex bunny, at epsilon = 0.25, 0.5
+  // and 4 mean edge lengths, one iteration lowered the energy fastest per second (3, 5 or 10
+  // iterations needed 1.5 to 3 times longer for the same energy). The line search corrects
+  // the step length.
+  static constexpr int max_iterations = 1;
   static constexpr double relative_tolerance = 1e-2;
 
   // Computes V ~ -H_r^-1 g_r at Y for the gradient G. Returns false if the linear solver
