@@ -9,11 +9,11 @@
 // with a CHOLMOD solver, it reports: the bound as a user checks it, in double (Euclidean and per
 // coordinate), the bending energy, the RMS distance of the vertices to the clean *surface*
 // (sliding along the surface is harmless), the mean angle between corresponding face normals
-// of result and clean mesh, the smallest triangle angle, the number of faces whose normal
-// turned by more than 90 degrees (folds), and the median time over N runs.
-// Then the protocol of the paper's Table 1: the Newton method and the projected gradient
-// method stopped at equal energy (iterations and seconds), and the mean conjugate gradient
-// iterations per Newton step.
+// of result and clean mesh, the smallest triangle angle, the number of faces whose normal is
+// more than 90 degrees from the clean one (folds), and the median time over N runs.
+// Then the protocol of the paper's Table 1, at EPS and at 8 EPS: the Newton method and the
+// projected gradient method stopped at equal energy (iterations and seconds), and the mean
+// conjugate gradient iterations per Newton step.
 //
 // Without arguments it reads the shared bunny meshes from the project's sibling folder
 // shared/data (the CONSTRAINED_FAIRING_SHARED_DATA path) and says so; it skips cleanly when
@@ -92,8 +92,9 @@ Quality measure(const Mesh& result, const Mesh& input, const Mesh& clean, const 
   for(auto f : faces(result))
   {
     const auto n = PMP::compute_face_normal(f, result);
-    normal_sum += angle_deg(n, PMP::compute_face_normal(f, clean));
-    if(n * PMP::compute_face_normal(f, input) < 0)
+    const auto n_clean = PMP::compute_face_normal(f, clean);
+    normal_sum += angle_deg(n, n_clean);
+    if(n * n_clean < 0)
       ++q.folds;
     const auto h = halfedge(f, result);
     const Point a = result.point(source(h, result)), b = result.point(target(h, result)),
@@ -125,6 +126,32 @@ void print_row(const std::string& name, const Quality& q, double seconds, std::s
             << (q.box_holds ? " " : "!") << std::setw(10) << q.energy << std::setw(11) << q.surface_rms
             << std::setw(9) << q.normal_error_deg << std::setw(9) << q.min_angle_deg << std::setw(7) << q.folds
             << std::setw(6) << iterations << std::setw(9) << seconds << std::endl;
+}
+
+// The paper's Table 1: the projected gradient method, stopped at the Newton method's energy.
+void table1_protocol(const Mesh& noisy, double eps, const PMP::Constrained_fairing_result& newton, double newton_seconds)
+{
+  const double target = newton.final_energy;
+  const std::size_t cap = 2000;
+  Mesh m = noisy;
+  PMP::Constrained_fairing_result r;
+  const double seconds = median_seconds(1, [&] {
+    r = PMP::constrained_fairing(
+      m, eps,
+      CFP::iteration_callback([&](std::size_t, double e) { return e > target; },
+                              CFP::fairing_method(PMP::Constrained_fairing_method::PROJECTED_GRADIENT,
+                                                  CFP::energy_decrease_threshold(0.0).number_of_iterations(cap))));
+  });
+  const char* more = r.final_energy <= target ? "" : ">";
+  std::cout << "Table 1 protocol at eps = " << std::setprecision(6) << eps << ", stopped at equal energy " << target
+            << ":\n"
+            << "  Newton:             " << newton.number_of_iterations << " iterations, " << newton_seconds << " s, "
+            << double(newton.number_of_cg_iterations) / double(newton.number_of_iterations)
+            << " CG iterations per Newton step\n"
+            << "  projected gradient: " << more << r.number_of_iterations << " iterations, " << more << seconds
+            << " s (energy " << r.final_energy << ")\n"
+            << "  time ratio projected gradient / Newton: " << more << seconds / newton_seconds << "\n"
+            << std::endl;
 }
 
 int main(int argc, char* argv[])
@@ -184,14 +211,15 @@ int main(int argc, char* argv[])
     PMP::constrained_fairing(untouched, eps, CGAL::parameters::number_of_iterations(0)).initial_energy;
   print_row("input", measure(noisy, noisy, clean, clean_tree, eps, input_energy), 0, 0);
 
-  auto run_mode = [&](const std::string& name, auto&& call) {
+  auto run_mode = [&](const std::string& name, auto&& call, bool print = true) {
     Mesh result;
     PMP::Constrained_fairing_result r;
     const double seconds = median_seconds(runs, [&] {
       result = noisy;
       r = call(result);
     });
-    print_row(name, measure(result, noisy, clean, clean_tree, eps, r.final_energy), seconds, r.number_of_iterations);
+    if(print)
+      print_row(name, measure(result, noisy, clean, clean_tree, eps, r.final_energy), seconds, r.number_of_iterations);
     return std::make_pair(r, seconds);
   };
 
@@ -207,27 +235,8 @@ int main(int argc, char* argv[])
 #endif
   std::cout << "('!' after a deviation: that bound is violated)\n\n";
 
-  // Table 1 protocol: the projected gradient method, stopped at the Newton method's energy.
-  const double target = newton.first.final_energy;
-  const std::size_t cap = 5000;
-  PMP::Constrained_fairing_result explicit_result;
-  const double explicit_seconds = median_seconds(1, [&] {
-    Mesh m = noisy;
-    explicit_result = PMP::constrained_fairing(
-      m, eps,
-      CFP::iteration_callback([&](std::size_t, double e) { return e > target; },
-                              CFP::fairing_method(PMP::Constrained_fairing_method::PROJECTED_GRADIENT,
-                                                  CFP::energy_decrease_threshold(0.0).number_of_iterations(cap))));
-  });
-  const bool reached = explicit_result.final_energy <= target;
-  std::cout << "Table 1 protocol (stopped at equal energy " << std::setprecision(6) << target << "):\n"
-            << "  Newton:             " << newton.first.number_of_iterations << " iterations, " << newton.second
-            << " s, " << double(newton.first.number_of_cg_iterations) / double(newton.first.number_of_iterations)
-            << " CG iterations per Newton step\n"
-            << "  projected gradient: " << (reached ? "" : ">") << explicit_result.number_of_iterations
-            << " iterations, " << (reached ? "" : ">") << explicit_seconds << " s (energy "
-            << explicit_result.final_energy << ")\n"
-            << "  time ratio projected gradient / Newton: " << (reached ? "" : ">")
-            << explicit_seconds / newton.second << std::endl;
+  table1_protocol(noisy, eps, newton.first, newton.second);
+  const auto newton_large = run_mode("", [&](Mesh& m) { return PMP::constrained_fairing(m, 8 * eps); }, false);
+  table1_protocol(noisy, 8 * eps, newton_large.first, newton_large.second);
   return EXIT_SUCCESS;
 }
