@@ -21,9 +21,14 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
+#include <CGAL/version_macros.h>
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#if CGAL_VERSION_MAJOR >= 6
+#include <CGAL/AABB_traits_3.h>
+#else
+#include <CGAL/AABB_traits.h>
+#endif
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh.h>
@@ -48,7 +53,12 @@ using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh> > >;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+#if CGAL_VERSION_MAJOR >= 6
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<K, Primitive> >;
+#else
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> >;
+#endif
 
 struct Quality
 {

@@ -139,11 +139,13 @@ void check_gradients()
   test::add_noise(rough, 0.25, 4);
   check_gradient(rough, 0, "strongly perturbed icosphere");
 
-  Mesh real;
-  const std::string file = std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/elephant.off";
-  CHECK(CGAL::IO::read_polygon_mesh(file, real));
-  if(!is_empty(real))
-    check_gradient(real, 3000, "elephant.off (3000 coordinates)");
+  for(const std::string name : {"elephant.off", "head.off"})
+  {
+    Mesh real;
+    CHECK(CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/" + name, real));
+    if(!is_empty(real))
+      check_gradient(real, 3000, name + (is_closed(real) ? " (closed" : " (border") + ", 3000 coordinates)");
+  }
 }
 
 int main()
