@@ -51,7 +51,7 @@ public:
   {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
-  // cancels. On LINEAR_SOLVER_FAILED, X is left as it was.
+  // cancels. On LINEAR_SOLVER_FAILED, X holds an intermediate iterate: discard it.
   template <typename Callback>
   void run(Points& X, const Solver_options& options, const Callback& callback,
            Constrained_fairing_result& result)

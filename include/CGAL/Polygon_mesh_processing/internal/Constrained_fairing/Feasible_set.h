@@ -122,11 +122,12 @@ private:
     const Eigen::Vector3d c = point(m_X0, i);
     const Eigen::Vector3d d = point(X, i) - c;
     // Scale the offset onto the sphere. Rounding the coordinates may leave the result just
-    // outside; aim a little inside then, by a slack that starts at that rounding error.
+    // outside; aim a little inside then, by a slack that starts at that rounding error (at
+    // worst the centre itself is reached, which is inside). X must be finite.
     const double r = d.norm();
     for(double slack = 0; ; slack = (slack == 0) ? rounding_error(i) : 2 * slack)
     {
-      point(X, i) = c + ((m_eps - slack) / r) * d;
+      point(X, i) = c + ((std::max)(m_eps - slack, 0.) / r) * d;
       if(contains(X, i))
         return;
     }

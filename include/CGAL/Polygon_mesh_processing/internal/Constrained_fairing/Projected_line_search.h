@@ -68,6 +68,8 @@ private:
                 Bending_energy& energy, const Condition& holds)
   {
     m_trial.noalias() = x + t * v;
+    if(!m_trial.allFinite()) // a step so long that it overflows is no candidate
+      return false;
     omega.project(m_trial);
     m_trial_energy = energy.value(m_trial);
     return holds(m_trial_energy, m_trial);
