@@ -108,10 +108,10 @@ public:
         if(m_subspace.run(Y, m_D, t_newton, m_omega, m_energy, decreases))
         {
           t_newton = m_subspace.step();
-          std::swap(Y, m_subspace.point());
+          Y.swap(m_subspace.point());
         }
       }
-      // Y is now the accepted point, with energy history's last value; move it to X.
+      // Y is the accepted point: it becomes the iterate.
       X.swap(Y);
       E = m_energy.value_and_gradient(X, m_G);
       history.push_back(E);
