@@ -6,18 +6,15 @@
 //
 //   add_noise IN R OUT [SEED]
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Surface_mesh.h>
+#include "benchmark_support.h"
+
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cstdlib>
 #include <iostream>
-#include <random>
 #include <string>
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using benchmark::Mesh;
 
 int main(int argc, char* argv[])
 {
@@ -32,22 +29,9 @@ int main(int argc, char* argv[])
     std::cerr << "error: cannot read " << argv[1] << std::endl;
     return EXIT_FAILURE;
   }
-  double h = 0;
-  for(auto e : edges(mesh))
-    h += CGAL::Polygon_mesh_processing::edge_length(e, mesh);
-  h /= double(num_edges(mesh));
+  const double h = benchmark::mean_edge_length(mesh);
   const double radius = std::stod(argv[2]) * h;
-
-  std::mt19937 rng(argc > 4 ? static_cast<unsigned int>(std::stoul(argv[4])) : 1u);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for(auto v : vertices(mesh))
-  {
-    K::Vector_3 d;
-    do
-      d = K::Vector_3(u(rng), u(rng), u(rng));
-    while(d.squared_length() > 1);
-    mesh.point(v) = mesh.point(v) + radius * d;
-  }
+  benchmark::add_noise(mesh, radius, argc > 4 ? static_cast<unsigned int>(std::stoul(argv[4])) : 1u);
   if(!CGAL::IO::write_polygon_mesh(argv[3], mesh, CGAL::parameters::stream_precision(17)))
   {
     std::cerr << "error: cannot write " << argv[3] << std::endl;

@@ -19,6 +19,8 @@
 // shared/data (the CONSTRAINED_FAIRING_SHARED_DATA path) and says so; it skips cleanly when
 // they are not there.
 
+#include "benchmark_support.h"
+
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
 #include <CGAL/version_macros.h>
@@ -29,9 +31,7 @@
 #else
 #include <CGAL/AABB_traits.h>
 #endif
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
@@ -39,7 +39,6 @@
 #endif
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -48,9 +47,9 @@
 #include <string>
 #include <vector>
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = K::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using benchmark::K;
+using benchmark::Mesh;
+using benchmark::Point;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
@@ -115,20 +114,6 @@ Quality measure(const Mesh& result, const Mesh& input, const Mesh& clean, const 
   return q;
 }
 
-template <typename F>
-double median_seconds(int runs, F&& f)
-{
-  std::vector<double> t;
-  for(int r = 0; r < runs; ++r)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 void print_row(const std::string& name, const Quality& q, double seconds, std::size_t iterations)
 {
   std::cout << std::left << std::setw(26) << name << std::right << std::setprecision(4) << std::setw(11)
@@ -145,7 +130,7 @@ void table1_protocol(const Mesh& noisy, double eps, const PMP::Constrained_fairi
   const std::size_t cap = 2000;
   Mesh m = noisy;
   PMP::Constrained_fairing_result r;
-  const double seconds = median_seconds(1, [&] {
+  const double seconds = benchmark::median_seconds(1, [&] {
     r = PMP::constrained_fairing(
       m, eps,
       CFP::iteration_callback([&](std::size_t, double e) { return e > target; },
@@ -166,15 +151,9 @@ void table1_protocol(const Mesh& noisy, double eps, const PMP::Constrained_fairi
 
 int main(int argc, char* argv[])
 {
-  std::vector<std::string> args;
-  int runs = 3;
-  for(int i = 1; i < argc; ++i)
-  {
-    if(std::string(argv[i]) == "--runs" && i + 1 < argc)
-      runs = std::stoi(argv[++i]);
-    else
-      args.push_back(argv[i]);
-  }
+  const benchmark::Arguments arguments(argc, argv);
+  const std::vector<std::string>& args = arguments.positional;
+  const int runs = arguments.runs;
   std::string noisy_file, clean_file;
   double eps = 0;
   if(args.size() >= 3)
@@ -224,7 +203,7 @@ int main(int argc, char* argv[])
   auto run_mode = [&](const std::string& name, auto&& call, bool print = true) {
     Mesh result;
     PMP::Constrained_fairing_result r;
-    const double seconds = median_seconds(runs, [&] {
+    const double seconds = benchmark::median_seconds(runs, [&] {
       result = noisy;
       r = call(result);
     });

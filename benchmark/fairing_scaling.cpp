@@ -11,12 +11,11 @@
 // iteration, peak resident memory so far, and, when CHOLMOD is available, the time with a
 // CHOLMOD supernodal solver as a ratio to the default solver's, measured in the same process.
 
+#include "benchmark_support.h"
+
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
@@ -25,40 +24,14 @@
 
 #include <sys/resource.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
-#include <random>
 #include <string>
 #include <vector>
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using benchmark::Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : edges(mesh))
-    sum += PMP::edge_length(e, mesh);
-  return sum / double(num_edges(mesh));
-}
-
-void add_noise(Mesh& mesh, double radius)
-{
-  std::mt19937 rng(1);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for(auto v : vertices(mesh))
-  {
-    K::Vector_3 d;
-    do
-      d = K::Vector_3(u(rng), u(rng), u(rng));
-    while(d.squared_length() > 1);
-    mesh.point(v) = mesh.point(v) + radius * d;
-  }
-}
 
 double peak_memory_mib()
 {
@@ -67,31 +40,11 @@ double peak_memory_mib()
   return double(usage.ru_maxrss) / 1024; // KiB on Linux
 }
 
-template <typename F>
-double median_seconds(int runs, F&& f)
-{
-  std::vector<double> t;
-  for(int r = 0; r < runs; ++r)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 int main(int argc, char* argv[])
 {
-  std::vector<std::string> args;
-  int runs = 3;
-  for(int i = 1; i < argc; ++i)
-  {
-    if(std::string(argv[i]) == "--runs" && i + 1 < argc)
-      runs = std::stoi(argv[++i]);
-    else
-      args.push_back(argv[i]);
-  }
+  const benchmark::Arguments arguments(argc, argv);
+  const std::vector<std::string>& args = arguments.positional;
+  const int runs = arguments.runs;
   const std::string in = args.size() > 0 ? args[0] : CONSTRAINED_FAIRING_DATA_DIR "/elephant.off";
   const unsigned int levels = args.size() > 1 ? static_cast<unsigned int>(std::stoul(args[1])) : 3u;
 
@@ -114,12 +67,12 @@ int main(int argc, char* argv[])
   {
     Mesh clean = base;
     CGAL::Subdivision_method_3::Loop_subdivision(clean, CGAL::parameters::number_of_iterations(level));
-    const double eps = 0.25 * mean_edge_length(clean);
+    const double eps = 0.25 * benchmark::mean_edge_length(clean);
     Mesh noisy = clean;
-    add_noise(noisy, eps);
+    benchmark::add_noise(noisy, eps, 1);
 
     PMP::Constrained_fairing_result r;
-    const double seconds = median_seconds(runs, [&] {
+    const double seconds = benchmark::median_seconds(runs, [&] {
       Mesh m = noisy;
       r = PMP::constrained_fairing(m, eps);
     });
@@ -129,7 +82,7 @@ int main(int argc, char* argv[])
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
     using Cholmod =
       CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
-    const double cholmod_seconds = median_seconds(runs, [&] {
+    const double cholmod_seconds = benchmark::median_seconds(runs, [&] {
       Mesh m = noisy;
       PMP::constrained_fairing(m, eps, CGAL::parameters::sparse_linear_solver(Cholmod()));
     });
