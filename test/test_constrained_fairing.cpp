@@ -13,6 +13,7 @@
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -231,6 +232,28 @@ void check_cancel_and_named_parameters()
   CHECK(test::identical(test::points(a), test::points(b))); // same 3 iterations
 }
 
+void check_conjugate_gradient_iterations()
+{
+  Mesh m = test::icosphere(3);
+  const double h = test::mean_edge_length(m);
+  test::add_noise(m, 0.3 * h, 15);
+  const std::vector<Point> input = test::points(m);
+  std::vector<double> energies;
+  const auto r = PMP::constrained_fairing(
+    m, 0.3 * h, CFP::conjugate_gradient_iterations(std::size_t(4), CFP::iteration_callback(Energy_recorder{&energies})));
+  CHECK(r && r.number_of_iterations == energies.size());
+  CHECK(bound_violation(test::points(m), input, 0.3 * h, Deviation_bound::BALL) <= 0);
+  CHECK(std::is_sorted(energies.rbegin(), energies.rend()) && r.final_energy < r.initial_energy);
+  // More than one iteration in some Newton steps, never more than four.
+  CHECK(r.number_of_cg_iterations > r.number_of_iterations);
+  CHECK(r.number_of_cg_iterations <= 4 * r.number_of_iterations);
+
+  Mesh once = test::icosphere(3);
+  test::add_noise(once, 0.3 * h, 15);
+  const auto r1 = PMP::constrained_fairing(once, 0.3 * h, CFP::conjugate_gradient_iterations(std::size_t(0)));
+  CHECK(r1 && r1.number_of_cg_iterations == r1.number_of_iterations); // 0 means 1
+}
+
 int main()
 {
   check_noisy_sphere(Deviation_bound::BALL);
@@ -241,5 +264,6 @@ int main()
   check_same_result_on_polyhedron();
   check_untouched();
   check_cancel_and_named_parameters();
+  check_conjugate_gradient_iterations();
   return test::report("test_constrained_fairing");
 }

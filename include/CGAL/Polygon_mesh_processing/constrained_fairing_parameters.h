@@ -39,6 +39,7 @@ namespace Constrained_fairing {
 enum deviation_bound_t { deviation_bound };
 enum fairing_method_t { fairing_method };
 enum energy_decrease_threshold_t { energy_decrease_threshold };
+enum conjugate_gradient_iterations_t { conjugate_gradient_iterations };
 enum iteration_callback_t { iteration_callback };
 
 } // namespace Constrained_fairing
@@ -75,6 +76,8 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(deviation_bound)
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fairing_method)
 /// the stopping threshold on the relative energy decrease, a `double`
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(energy_decrease_threshold)
+/// the largest number of conjugate gradient iterations per Newton step, a `std::size_t`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(conjugate_gradient_iterations)
 /// a callable `bool(std::size_t iteration, double energy)`, called after each iteration
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(iteration_callback)
 

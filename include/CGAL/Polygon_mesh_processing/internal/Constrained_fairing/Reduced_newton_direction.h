@@ -22,19 +22,15 @@ namespace Constrained_fairing {
 class Reduced_newton_direction
 {
 public:
-  // S M^-1 S models the energy only roughly once many vertices sit on their bounds, so
-  // solving the model better does not pay: on the 37 k vertex bunny, at epsilon = 0.25, 0.5
-  // and 4 mean edge lengths, one iteration lowered the energy fastest per second (3, 5 or 10
-  // iterations needed 1.5 to 3 times longer for the same energy). The line search corrects
-  // the step length.
-  static constexpr int max_iterations = 1;
+  // Conjugate gradient iterations stop early once the preconditioned residual fell by this.
   static constexpr double relative_tolerance = 1e-2;
 
-  // Computes V ~ -H_r^-1 g_r at Y for the gradient G. Returns false if the linear solver
-  // fails. Adds the conjugate gradient iterations done to `iterations`.
+  // Computes V ~ -H_r^-1 g_r at Y for the gradient G, with at most `max_iterations`
+  // conjugate gradient iterations. Returns false if the linear solver fails. Adds the
+  // iterations done to `iterations`.
   template <typename Hessian>
   bool compute(const Points& Y, const Points& G, const Feasible_set& omega, Hessian& H,
-               Points& V, std::size_t& iterations)
+               std::size_t max_iterations, Points& V, std::size_t& iterations)
   {
     m_r = -G;
     omega.restrict_to_face(Y, m_r);
@@ -44,7 +40,7 @@ public:
     m_p = m_z;
     double rz = dot(m_r, m_z);
     const double stop = relative_tolerance * relative_tolerance * rz;
-    for(int k = 0; k < max_iterations && rz > stop; ++k)
+    for(std::size_t k = 0; k < max_iterations && rz > stop; ++k)
     {
       H.apply(m_p, m_q);
       omega.restrict_to_face(Y, m_q);

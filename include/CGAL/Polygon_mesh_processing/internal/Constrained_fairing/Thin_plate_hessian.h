@@ -51,9 +51,11 @@ public:
   }
 
   // out = S M^-1 S P
-  void apply(const Points& P, Points& out) const
+  void apply(const Points& P, Points& out)
   {
-    out.noalias() = m_S * (m_inverse_mass.asDiagonal() * (m_S * P));
+    m_SP.noalias() = m_S * P;
+    m_SP = m_inverse_mass.asDiagonal() * m_SP;
+    out.noalias() = m_S * m_SP;
   }
 
   // out = H^-1 R = S^-1 M S^-1 R. False if the solver fails.
@@ -143,6 +145,7 @@ private:
   SparseLinearSolver m_solver;
   typename SparseLinearSolver::NT m_D = 1;
   Vector m_b, m_x;
+  Points m_SP; // work buffer of apply()
 };
 
 } // namespace Constrained_fairing
