@@ -37,7 +37,7 @@ struct Solver_options
   double threshold = 1e-3;
   // S M^-1 S models the energy only roughly once many vertices sit on their bounds, so
   // solving the model better does not pay. On the 37 k vertex bunny, 3 and 10 iterations per
-  // step needed 2.5 and 4 times longer to reach the energy that 1 reaches at epsilon = 0.25
+  // step needed more than 2 and 3 times longer to reach the energy that 1 reaches at epsilon = 0.25
   // mean edge lengths, and did not reach it in 200 iterations at 2 mean edge lengths
   // (benchmark/fairing_quality compares them).
   std::size_t cg_iterations = 1;
