@@ -48,7 +48,7 @@ Mesh hinge(double angle)
 double energy(const Mesh& m)
 {
   const Indexed x(m);
-  return CF::Bending_energy(x.hinges).value(x.X);
+  return CF::Bending_energy(x.hinges, x.X).value(x.X);
 }
 
 void check_hand_computed_hinges()
@@ -92,16 +92,17 @@ void check_invariance()
   }
 }
 
-// The analytic gradient against central differences, on `count` coordinates spread over the
-// mesh (all of them if count is 0).
-void check_gradient(const Mesh& m, std::size_t count, const std::string& name)
+// The analytic gradient against central differences of step `step` mean edge lengths, on
+// `count` coordinates spread over the mesh (all of them if count is 0).
+void check_gradient(const Mesh& m, std::size_t count, const std::string& name, double step = 1e-6)
 {
   Indexed x(m);
-  CF::Bending_energy E(x.hinges);
+  CF::Bending_energy E(x.hinges, x.X);
   CF::Points G;
   E.value_and_gradient(x.X, G);
+  CHECK(G.allFinite());
 
-  const double h = 1e-6 * test::mean_edge_length(m);
+  const double h = step * test::mean_edge_length(m);
   const std::size_t n = static_cast<std::size_t>(x.X.size());
   const std::size_t stride = count == 0 ? 1 : std::max<std::size_t>(1, n / count);
   double error2 = 0, norm2 = 0;
@@ -148,11 +149,68 @@ void check_gradients()
   }
 }
 
+// Coordinates far outside the range where squared areas fit in double.
+void check_extreme_scales()
+{
+  Mesh m = test::icosphere(2);
+  test::add_noise(m, 0.05, 5);
+  const Indexed x(m);
+  CF::Bending_energy reference(x.hinges, x.X);
+  CF::Points G;
+  const double E = reference.value_and_gradient(x.X, G);
+  for(double scale : {1e-200, 1e-150, 1e150, 1e200})
+  {
+    const CF::Points Y = scale * x.X;
+    CF::Bending_energy scaled(x.hinges, Y);
+    CF::Points GY;
+    const double EY = scaled.value_and_gradient(Y, GY);
+    CHECK(std::abs(EY - E) <= 1e-12 * E);
+    CHECK(GY.allFinite() && (scale * GY - G).norm() <= 1e-10 * G.norm());
+  }
+}
+
+// Hinges with a triangle degenerate in the input are left out; triangles that degenerate
+// later keep the energy and its gradient finite and smooth.
+void check_degenerate_triangles()
+{
+  // The second triangle of the hinge collapsed onto the shared edge: no hinge remains.
+  Mesh collapsed = hinge(CGAL_PI / 3);
+  collapsed.point(*std::prev(vertices(collapsed).end())) = Point(0.5, 0, 0);
+  const Indexed c(collapsed);
+  CF::Bending_energy E(c.hinges, c.X);
+  CHECK(E.number_of_degenerate_hinges() == 1 && E.value(c.X) == 0);
+  // A needle twice as thin as the threshold is left out too, and one twice as thick is not.
+  for(double height : {0.5e-6, 2e-6})
+  {
+    Mesh needle = hinge(CGAL_PI / 3);
+    needle.point(*std::prev(vertices(needle).end())) = Point(0.5, 0, height);
+    const Indexed x(needle);
+    CHECK(CF::Bending_energy(x.hinges, x.X).number_of_degenerate_hinges() == (height < 1e-6 ? 1u : 0u));
+  }
+
+  // A noisy sphere whose input is regular, evaluated where 30 triangles have collapsed to a
+  // point, to a segment or onto a vertex.
+  Mesh sphere = test::icosphere(2);
+  test::add_noise(sphere, 0.05, 6);
+  Indexed x(sphere);
+  Mesh moved = sphere;
+  test::make_degenerate(moved, 30.0 / double(num_faces(moved)), 7);
+  const Indexed y(moved);
+  CF::Bending_energy energy(x.hinges, x.X);
+  CHECK(energy.number_of_degenerate_hinges() == 0);
+  CF::Points G;
+  const double value = energy.value_and_gradient(y.X, G);
+  CHECK(std::isfinite(value) && G.allFinite());
+  CHECK(test::number_of_degenerate_faces(moved) >= 30);
+}
+
 int main()
 {
   check_hand_computed_hinges();
   check_zero_on_planes();
   check_invariance();
   check_gradients();
+  check_extreme_scales();
+  check_degenerate_triangles();
   return test::report("test_bending_energy");
 }

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -122,6 +123,59 @@ inline bool identical(const std::vector<Point>& a, const std::vector<Point>& b)
     if(!(a[i].x() == b[i].x() && a[i].y() == b[i].y() && a[i].z() == b[i].z()))
       return false;
   return true;
+}
+
+// Makes `fraction` of the faces of m degenerate, chosen at random (seeded), in turn by
+// moving a vertex onto the line through the other two (collinear vertices), onto another
+// vertex (duplicated vertices), or all three onto their centroid (zero area, zero edges).
+// Neighbouring faces get distorted too. Returns the number of faces changed.
+template <typename PolygonMesh>
+std::size_t make_degenerate(PolygonMesh& m, double fraction, unsigned int seed)
+{
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<face_descriptor> chosen(faces(m).begin(), faces(m).end());
+  std::mt19937 rng(seed);
+  std::shuffle(chosen.begin(), chosen.end(), rng);
+  chosen.resize(static_cast<std::size_t>(fraction * double(chosen.size())));
+  std::uniform_real_distribution<double> u(0.2, 0.8);
+  auto vpm = get(CGAL::vertex_point, m);
+  for(std::size_t k = 0; k < chosen.size(); ++k)
+  {
+    const auto h = halfedge(chosen[k], m);
+    const auto a = source(h, m), b = target(h, m), c = target(next(h, m), m);
+    const Point pa = get(vpm, a), pb = get(vpm, b), pc = get(vpm, c);
+    switch(k % 3)
+    {
+    case 0: put(vpm, c, pa + u(rng) * (pb - pa)); break;
+    case 1: put(vpm, b, pa); break;
+    default:
+    {
+      const Point g = CGAL::centroid(pa, pb, pc);
+      put(vpm, a, g);
+      put(vpm, b, g);
+      put(vpm, c, g);
+    }
+    }
+  }
+  return chosen.size();
+}
+
+// The faces whose area is below 1e-12 of the mean face area.
+template <typename PolygonMesh>
+std::size_t number_of_degenerate_faces(const PolygonMesh& m)
+{
+  std::vector<double> areas;
+  double sum = 0;
+  for(auto f : faces(m))
+  {
+    const auto h = halfedge(f, m);
+    const auto vpm = get(CGAL::vertex_point, m);
+    areas.push_back(std::sqrt(CGAL::squared_area(get(vpm, source(h, m)), get(vpm, target(h, m)),
+                                                 get(vpm, target(next(h, m), m)))));
+    sum += areas.back();
+  }
+  const double threshold = 1e-12 * sum / double(areas.size());
+  return std::size_t(std::count_if(areas.begin(), areas.end(), [&](double a) { return a <= threshold; }));
 }
 
 inline double mean_edge_length(const Mesh& m)

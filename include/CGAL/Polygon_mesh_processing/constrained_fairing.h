@@ -9,8 +9,10 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set_newton.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Feasible_set.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
 
 #include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/assertions.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -35,21 +37,6 @@ struct Always_continue
 
 using Default_sparse_linear_solver =
   CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
-
-// The reason `tmesh` cannot be faired, or an empty string.
-template <typename TriangleMesh>
-std::string input_error(const TriangleMesh& tmesh, const Points& X0, double epsilon)
-{
-  if(!(std::isfinite(epsilon) && epsilon > 0))
-    return "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")";
-  if(num_vertices(tmesh) == 0 || num_faces(tmesh) == 0)
-    return "the mesh is empty";
-  if(!is_triangle_mesh(tmesh))
-    return "the mesh has faces that are not triangles";
-  if(!X0.allFinite())
-    return "the mesh has vertices with NaN or infinite coordinates";
-  return std::string();
-}
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -180,31 +167,46 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
     get_parameter(np, CF::conjugate_gradient_iterations), options.cg_iterations)));
   const Deviation_bound shape = choose_parameter(get_parameter(np, CF::deviation_bound), Deviation_bound::BALL);
   const auto callback = choose_parameter(get_parameter(np, CF::iteration_callback), CF::Always_continue());
+  CGAL_precondition(options.threshold >= 0);
+
+  Constrained_fairing_result result;
+  result.message = CF::epsilon_error(epsilon);
+  if(!result.message.empty())
+    return result;
+  if(num_vertices(tmesh) == 0)
+  {
+    result.message = "the mesh is empty";
+    return result;
+  }
 
   // Vertices are numbered in the order `vertices(tmesh)` lists them.
   auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh);
-  CF::Points X0(static_cast<Eigen::Index>(num_vertices(tmesh)), 3);
   std::size_t n = 0;
   for(auto v : vertices(tmesh))
-  {
-    put(vertex_index, v, n);
-    const Point_3& p = get(vpm, v);
-    X0.row(static_cast<Eigen::Index>(n++)) << CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z());
-  }
+    put(vertex_index, v, n++);
+  result.message = CF::connectivity_error(tmesh, vertex_index);
+  if(!result.message.empty())
+    return result;
 
-  Constrained_fairing_result result;
-  result.message = CF::input_error(tmesh, X0, epsilon);
+  CF::Points X0(static_cast<Eigen::Index>(n), 3);
+  for(auto v : vertices(tmesh))
+  {
+    const Point_3& p = get(vpm, v);
+    X0.row(static_cast<Eigen::Index>(get(vertex_index, v))) << CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+      CGAL::to_double(p.z());
+  }
+  result.message = CF::coordinates_error(X0);
   if(!result.message.empty())
     return result;
 
   const CF::Hinge_mesh mesh(tmesh, vertex_index);
-  CF::Bending_energy energy(mesh);
-  result.initial_energy = result.final_energy = energy.value(X0);
-  if(!std::isfinite(result.initial_energy))
+  CF::Bending_energy energy(mesh, X0);
+  if(!energy.is_defined())
   {
-    result.message = "the mesh has degenerate (zero area) triangles";
+    result.message = "all triangles of the mesh have zero area";
     return result;
   }
+  result.initial_energy = result.final_energy = energy.value(X0);
   result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
   if(options.max_iterations == 0)
     return result;

@@ -53,7 +53,7 @@ public:
 
   Active_set_newton(const Hinge_mesh& mesh, const Points& X0, const Feasible_set& omega,
                     const SparseLinearSolver& solver)
-    : m_mesh(mesh), m_X0(X0), m_omega(omega), m_energy(mesh), m_solver(solver)
+    : m_mesh(mesh), m_X0(X0), m_omega(omega), m_energy(mesh, X0), m_solver(solver)
   {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false

@@ -9,6 +9,21 @@
 // (pi when flat). With unit normals n1, n2, cos(theta_e / 2)^2 = (1 - <n1, n2>) / 2, so a
 // hinge contributes (3/4) |e|^2 |n1 - n2|^2 / (2 A_e), and that last form keeps full
 // relative precision on nearly flat hinges.
+//
+// Degenerate triangles. A triangle of zero area has no normal, and near zero its normal turns
+// wildly under tiny moves: a hinge containing it has no meaningful dihedral angle, and its
+// steep energy would throttle every step of the descent. So:
+//  - hinges with a triangle that is degenerate in the input, of doubled area at most 1e-6 of
+//    its longest squared edge (an angle of about a micro radian), are left out of the energy.
+//    Their vertices are still faired by their other hinges.
+//  - the remaining triangles' doubled areas and normals are regularized, so that triangles
+//    degenerating during the descent cannot produce a NaN: with N the cross product of two
+//    edges, l = sqrt(|N|^2 + delta^2) and n = N / l, delta 1e-9 of the input's mean doubled
+//    area. In double, this leaves l and n unchanged on a triangle larger than a tenth of the
+//    mean, and changes them by less than 1e-12 relatively on one a thousand times smaller.
+//    A triangle collapsing to zero area gets a zero normal instead of an undefined
+//    one, and its hinges cost about as much as a bend between unit normals 60 degrees apart.
+// The energy and its gradient are then finite on every configuration of the points.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
@@ -17,7 +32,8 @@
 
 #include <Eigen/Geometry>
 
-#include <limits>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -28,58 +44,73 @@ namespace Constrained_fairing {
 class Bending_energy
 {
 public:
-  explicit Bending_energy(const Hinge_mesh& mesh) : m_mesh(mesh) {}
+  // Relative to the input's mean doubled area.
+  static constexpr double area_regularization = 1e-9;
+  // Relative to a triangle's longest squared edge.
+  static constexpr double degenerate_area = 1e-6;
 
-  // +infinity as soon as a hinge has a triangle of zero area: its normal is undefined, and a
-  // line search must never step there.
+  // X0: the input points, which fix the regularization and the hinges left out.
+  Bending_energy(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_scale(unit_scale(X0))
+  {
+    compute_triangles(X0);
+    double sum = 0; // of the unregularized doubled areas, delta being 0 so far
+    std::vector<bool> degenerate(m_mesh.triangles.size());
+    for(std::size_t f = 0; f < m_mesh.triangles.size(); ++f)
+    {
+      sum += m_doubled_area[f];
+      const auto& v = m_mesh.triangles[f];
+      double longest = 0;
+      for(int k = 0; k < 3; ++k)
+        longest = (std::max)(longest, (point(m_Y, v[k]) - point(m_Y, v[(k + 1) % 3])).squaredNorm());
+      degenerate[f] = !(m_doubled_area[f] > degenerate_area * longest);
+    }
+    m_delta = m_mesh.triangles.empty() ? 0 : area_regularization * sum / double(m_mesh.triangles.size());
+    for(const Hinge& h : m_mesh.hinges)
+      if(!degenerate[h.f[0]] && !degenerate[h.f[1]])
+        m_hinges.push_back(h);
+  }
+
+  // False if the input has no area at all (in double): then the regularization vanishes
+  // and the energy is undefined.
+  bool is_defined() const { return m_delta * m_delta > 0; }
+
+  // The number of hinges left out because of a degenerate triangle.
+  std::size_t number_of_degenerate_hinges() const { return m_mesh.hinges.size() - m_hinges.size(); }
+
   double value(const Points& X)
   {
     compute_triangles(X);
     double energy = 0;
-    for(const Hinge& h : m_mesh.hinges)
-    {
-      if(!is_regular(h))
-        return std::numeric_limits<double>::infinity();
-      energy += Hinge_terms(*this, X, h).energy();
-    }
+    for(const Hinge& h : m_hinges)
+      energy += Hinge_terms(*this, h).energy();
     return energy;
   }
 
   // Returns the energy and writes its gradient to G (resized to X's shape). With
-  // L = |e|^2, S = l1 + l2 and C = |n1 - n2|^2 / 2 (l the doubled areas, n the unit normals
-  // of the triangles T1 = (p0, p1, p2) and T2 = (p1, p0, p3) of a hinge), a hinge contributes
-  // (3/2) L C / S, and
+  // L = |e|^2, S = l1 + l2 and C = |n1 - n2|^2 / 2 (l and n the regularized doubled areas and
+  // normals of the triangles T1 = (p0, p1, p2) and T2 = (p1, p0, p3) of a hinge), a hinge
+  // contributes (3/2) L C / S, and
   //   dE = (3/2) (C/S dL + L/S dC - L C/S^2 dS).
-  // For a vertex a of a triangle T with opposite edge vector o (previous vertex minus next
-  // one, in T's orientation) and n' the other triangle's normal:
-  //   d l / d a = n x o,    d <n, n'> / d a = (o . (n x n')) / l * n,    C = 1 - <n1, n2>.
-  // Both are linear in per-triangle quantities, so each hinge only adds to its triangles'
-  // coefficients (a scalar for dS, a vector for dC), and each triangle then spreads them to
-  // its vertices once.
+  // For a triangle, dl = <n, dN> and dn = (dN - n <n, dN>) / l, so dS and dC are linear in the
+  // triangles' dN: each hinge adds a vector coefficient a to each of its two triangles, with
+  // dE = sum <a, dN>. Moving vertex k of a triangle by d changes N by d x (p_(k+1) - p_(k+2)),
+  // so the triangle then adds a x (p_(k+2) - p_(k+1)) to the gradient at that vertex.
   double value_and_gradient(const Points& X, Points& G)
   {
     compute_triangles(X);
     const std::size_t nt = m_mesh.triangles.size();
-    m_area_coefficient.assign(nt, 0.);
-    m_normal_coefficient.setZero(static_cast<Eigen::Index>(nt), 3);
+    m_coefficient.setZero(static_cast<Eigen::Index>(nt), 3);
     G.setZero(X.rows(), 3);
 
     double energy = 0;
-    for(const Hinge& h : m_mesh.hinges)
+    for(const Hinge& h : m_hinges)
     {
-      if(!is_regular(h))
-      {
-        G.setConstant(std::numeric_limits<double>::quiet_NaN());
-        return std::numeric_limits<double>::infinity();
-      }
-      const Hinge_terms t(*this, X, h);
+      const Hinge_terms t(*this, h);
       energy += t.energy();
       const double kS = -1.5 * t.L * t.C / (t.S * t.S), kC = 1.5 * t.L / t.S, kL = 1.5 * t.C / t.S;
-      const Eigen::Vector3d m = t.n1.cross(t.n2);
-      m_area_coefficient[h.f[0]] += kS;
-      m_area_coefficient[h.f[1]] += kS;
-      point(m_normal_coefficient, h.f[0]) += (kC / t.l1) * m;
-      point(m_normal_coefficient, h.f[1]) -= (kC / t.l2) * m;
+      const Eigen::Vector3d d = t.n1 - t.n2;
+      point(m_coefficient, h.f[0]) += (kC / t.l1) * (d - d.dot(t.n1) * t.n1) + kS * t.n1;
+      point(m_coefficient, h.f[1]) -= (kC / t.l2) * (d - d.dot(t.n2) * t.n2) - kS * t.n2;
       point(G, h.v[0]) -= 2 * kL * t.e;
       point(G, h.v[1]) += 2 * kL * t.e;
     }
@@ -87,54 +118,54 @@ public:
     for(std::size_t f = 0; f < nt; ++f)
     {
       const auto& v = m_mesh.triangles[f];
-      const Eigen::Vector3d n = point(m_normal, f), a = point(m_normal_coefficient, f);
-      const double kS = m_area_coefficient[f];
+      const Eigen::Vector3d a = point(m_coefficient, f);
       for(int k = 0; k < 3; ++k)
-      {
-        const Eigen::Vector3d o = point(X, v[(k + 2) % 3]) - point(X, v[(k + 1) % 3]);
-        point(G, v[k]) += kS * n.cross(o) - o.dot(a) * n;
-      }
+        point(G, v[k]) += a.cross(point(m_Y, v[(k + 2) % 3]) - point(m_Y, v[(k + 1) % 3]));
     }
+    G *= m_scale; // back from the scaled points: E(s X) = E(X)
     return energy;
   }
 
 private:
-  // Doubled area l and unit normal n of every triangle.
+  // The scaled points Y = s X, and the regularized doubled area l and normal n of every
+  // triangle.
   void compute_triangles(const Points& X)
   {
+    m_Y.noalias() = m_scale * X;
     const std::size_t nt = m_mesh.triangles.size();
     m_normal.resize(static_cast<Eigen::Index>(nt), 3);
     m_doubled_area.resize(nt);
     for(std::size_t f = 0; f < nt; ++f)
     {
       const auto& v = m_mesh.triangles[f];
-      const Eigen::Vector3d p0 = point(X, v[0]);
-      const Eigen::Vector3d N = (point(X, v[1]) - p0).cross(point(X, v[2]) - p0);
-      m_doubled_area[f] = N.norm();
-      point(m_normal, f) = N / m_doubled_area[f];
+      const Eigen::Vector3d p0 = point(m_Y, v[0]);
+      const Eigen::Vector3d N = (point(m_Y, v[1]) - p0).cross(point(m_Y, v[2]) - p0);
+      const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
+      m_doubled_area[f] = l;
+      point(m_normal, f) = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
     }
   }
-
-  bool is_regular(const Hinge& h) const { return m_doubled_area[h.f[0]] > 0 && m_doubled_area[h.f[1]] > 0; }
 
   struct Hinge_terms
   {
     Eigen::Vector3d e, n1, n2;
     double l1, l2, L, S, C;
 
-    Hinge_terms(const Bending_energy& E, const Points& X, const Hinge& h)
-      : e(point(X, h.v[1]) - point(X, h.v[0])), n1(point(E.m_normal, h.f[0])), n2(point(E.m_normal, h.f[1])),
-        l1(E.m_doubled_area[h.f[0]]), l2(E.m_doubled_area[h.f[1]]), L(e.squaredNorm()), S(l1 + l2),
-        C(0.5 * (n1 - n2).squaredNorm())
+    Hinge_terms(const Bending_energy& E, const Hinge& h)
+      : e(point(E.m_Y, h.v[1]) - point(E.m_Y, h.v[0])), n1(point(E.m_normal, h.f[0])),
+        n2(point(E.m_normal, h.f[1])), l1(E.m_doubled_area[h.f[0]]), l2(E.m_doubled_area[h.f[1]]),
+        L(e.squaredNorm()), S(l1 + l2), C(0.5 * (n1 - n2).squaredNorm())
     {}
 
     double energy() const { return 1.5 * L * C / S; }
   };
 
   const Hinge_mesh& m_mesh;
-  // per triangle, recomputed at each evaluation
-  Points m_normal, m_normal_coefficient;
-  std::vector<double> m_doubled_area, m_area_coefficient;
+  std::vector<Hinge> m_hinges; // those of m_mesh without a degenerate triangle
+  double m_scale, m_delta = 0;
+  // recomputed at each evaluation: the scaled points, and per triangle
+  Points m_Y, m_normal, m_coefficient;
+  std::vector<double> m_doubled_area;
 };
 
 } // namespace Constrained_fairing

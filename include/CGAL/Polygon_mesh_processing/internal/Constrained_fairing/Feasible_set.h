@@ -90,11 +90,16 @@ public:
         continue;
       }
       const Eigen::Vector3d d = point(Y, i) - point(m_X0, i);
-      const double r = d.norm();
+      const double r = d.stableNorm();
       if(r >= m_eps - sphere_tolerance(i))
       {
-        const Eigen::Vector3d n = d / r;
-        point(V, i) -= n.dot(point(V, i)) * n;
+        if(r > 0)
+        {
+          const Eigen::Vector3d n = d / r;
+          point(V, i) -= n.dot(point(V, i)) * n;
+        }
+        else // epsilon below the rounding error of the coordinates: the vertex cannot move
+          point(V, i).setZero();
       }
     }
   }
@@ -122,20 +127,24 @@ private:
     const Eigen::Vector3d c = point(m_X0, i);
     const Eigen::Vector3d d = point(X, i) - c;
     // Scale the offset onto the sphere. Rounding the coordinates may leave the result just
-    // outside; aim a little inside then, by a slack that starts at that rounding error (at
-    // worst the centre itself is reached, which is inside). X must be finite.
-    const double r = d.norm();
-    for(double slack = 0; ; slack = (slack == 0) ? rounding_error(i) : 2 * slack)
-    {
-      point(X, i) = c + ((std::max)(m_eps - slack, 0.) / r) * d;
-      if(contains(X, i))
-        return;
-    }
+    // outside; aim a little inside then, by a slack that starts at that rounding error. The
+    // centre, reached at worst, is inside. stableNorm() keeps r from underflowing to zero;
+    // an offset that overflows (X must be finite, not X - c) goes to the centre.
+    const double r = d.stableNorm();
+    if(r < std::numeric_limits<double>::infinity())
+      for(double slack = 0; slack < m_eps; slack = (slack == 0) ? rounding_error(i) : 2 * slack)
+      {
+        point(X, i) = c + ((m_eps - slack) / r) * d;
+        if(contains(X, i))
+          return;
+      }
+    point(X, i) = c;
   }
 
   double rounding_error(std::size_t i) const
   {
-    return std::numeric_limits<double>::epsilon() * (point(m_X0, i).lpNorm<Eigen::Infinity>() + m_eps);
+    return (std::max)(std::numeric_limits<double>::epsilon() * (point(m_X0, i).lpNorm<Eigen::Infinity>() + m_eps),
+                      std::numeric_limits<double>::denorm_min());
   }
 
   // How far inside its sphere a vertex still counts as on it: what projection may leave.

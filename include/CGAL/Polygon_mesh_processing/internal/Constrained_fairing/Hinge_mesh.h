@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -36,6 +37,20 @@ inline Eigen::Map<const Eigen::Vector3d> point(const Points& X, std::size_t i)
 inline Eigen::Map<Eigen::Vector3d> point(Points& X, std::size_t i)
 {
   return Eigen::Map<Eigen::Vector3d>(X.data() + 3 * i);
+}
+
+// The power of two that brings the largest coordinate of X into [1/2, 1). The energy and its
+// Hessian are evaluated on scaled points: a power of two scales every intermediate result
+// exactly, so this only keeps squared areas of a mesh in kilometres or nanometres inside
+// the range of double.
+inline double unit_scale(const Points& X)
+{
+  const double largest = X.size() > 0 ? X.cwiseAbs().maxCoeff() : 0;
+  if(!(largest > 0))
+    return 1;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return std::ldexp(1., (std::max)(-1000, (std::min)(1000, -exponent)));
 }
 
 // An interior edge (v[0], v[1]) with its two triangles (v[0], v[1], v[2]) and (v[1], v[0], v[3]),

@@ -4,7 +4,8 @@
 // The approximation H = S M^-1 S of the bending energy's Hessian (Section 4.1): the Hessian
 // of the thin plate energy over the input mesh. S is the cotan stiffness matrix with 0.1 added
 // to its diagonal (which removes its kernel, the constants), M the lumped vertex areas. It is
-// positive definite, the same for x, y and z, built and factorized once.
+// positive definite, the same for x, y and z, built and factorized once. Both are assembled
+// on the points scaled by unit_scale(), as the energy is, and scaled back when applied.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_THIN_PLATE_HESSIAN_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_THIN_PLATE_HESSIAN_H
@@ -33,10 +34,12 @@ public:
   static constexpr double diagonal_shift = 0.1;
 
   Thin_plate_hessian(const Hinge_mesh& mesh, const Points& X0, const SparseLinearSolver& solver)
-    : m_n(mesh.number_of_vertices), m_A(static_cast<int>(m_n)), m_solver(solver), m_b(m_n), m_x(m_n)
+    : m_n(mesh.number_of_vertices), m_scale(unit_scale(X0)), m_A(static_cast<int>(m_n)), m_solver(solver),
+      m_b(m_n), m_x(m_n)
   {
-    assemble_stiffness(mesh, X0);
-    assemble_mass(mesh, X0);
+    const Points Y0 = m_scale * X0;
+    assemble_stiffness(mesh, Y0);
+    assemble_mass(mesh, Y0);
   }
 
   Thin_plate_hessian(const Thin_plate_hessian&) = delete; // the solver may point to m_A
@@ -50,12 +53,12 @@ public:
     return m_solver.factor(m_A, m_D);
   }
 
-  // out = S M^-1 S P
+  // out = S M^-1 S P (M in the mesh's units: s^-2 times the scaled masses)
   void apply(const Points& P, Points& out)
   {
     m_SP.noalias() = m_S * P;
-    m_SP = m_inverse_mass.asDiagonal() * m_SP;
-    out.noalias() = m_S * m_SP;
+    m_SP = (m_scale * m_inverse_mass).asDiagonal() * m_SP;
+    out.noalias() = m_scale * (m_S * m_SP);
   }
 
   // out = H^-1 R = S^-1 M S^-1 R. False if the solver fails.
@@ -69,26 +72,16 @@ public:
       if(!m_solver.linear_solver(m_b, m_x))
         return false;
       for(std::size_t i = 0; i < m_n; ++i)
-        m_b.set(i, m_mass[i] * m_x[i] / m_D);
+        m_b.set(i, m_mass[i] * m_x[i] / (m_D * m_scale));
       if(!m_solver.linear_solver(m_b, m_x))
         return false;
       for(std::size_t i = 0; i < m_n; ++i)
-        out(i, c) = m_x[i] / m_D;
+        out(i, c) = m_x[i] / (m_D * m_scale);
     }
     return true;
   }
 
 private:
-  // Cotangent of the angle at c in the triangle (a, b, c). The sine is floored at 1e-6 of the
-  // product of the side lengths: needle triangles then weigh like a 1e-6 radian angle
-  // instead of blowing up the stiffness matrix (S only preconditions, it need not be exact).
-  static double cotangent(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-  {
-    const Eigen::Vector3d u = a - c, v = b - c;
-    const double sine_scaled = (std::max)(u.cross(v).norm(), 1e-6 * u.norm() * v.norm());
-    return sine_scaled > 0 ? u.dot(v) / sine_scaled : 0;
-  }
-
   void add_edge(std::vector<Eigen::Triplet<double> >& entries, std::size_t a, std::size_t b, double w)
   {
     const int i = static_cast<int>(a), j = static_cast<int>(b);
@@ -98,20 +91,28 @@ private:
     entries.emplace_back(j, j, w);
   }
 
-  // S_ij = -(cot alpha_ij + cot beta_ij) / 2, S_ii = -sum_j S_ij + 0.1
-  void assemble_stiffness(const Hinge_mesh& mesh, const Points& X0)
+  // S_ij = -(cot alpha_ij + cot beta_ij) / 2, S_ii = -sum_j S_ij + 0.1, triangle by triangle.
+  // The three cotangents of a triangle share one denominator, its doubled area, which keeps
+  // the triangle's 3 x 3 block positive semi-definite. Needle and degenerate triangles would
+  // blow it up: the denominator is floored at 1e-6 of the longest squared edge, which scales
+  // the whole block down and keeps it semi-definite (S only preconditions, it need not be
+  // exact). A triangle whose vertices coincide adds nothing.
+  void assemble_stiffness(const Hinge_mesh& mesh, const Points& Y0)
   {
     std::vector<Eigen::Triplet<double> > entries;
-    entries.reserve(4 * (mesh.hinges.size() + mesh.border_edges.size()) + m_n);
-    for(const Hinge& h : mesh.hinges)
+    entries.reserve(12 * mesh.triangles.size() + m_n);
+    for(const auto& t : mesh.triangles)
     {
-      const auto p0 = point(X0, h.v[0]), p1 = point(X0, h.v[1]);
-      add_edge(entries, h.v[0], h.v[1],
-               0.5 * (cotangent(p0, p1, point(X0, h.v[2])) + cotangent(p0, p1, point(X0, h.v[3]))));
+      const Eigen::Vector3d p[3] = {point(Y0, t[0]), point(Y0, t[1]), point(Y0, t[2])};
+      const Eigen::Vector3d u[3] = {p[2] - p[1], p[0] - p[2], p[1] - p[0]}; // u[k] opposite p[k]
+      const double longest = (std::max)({u[0].squaredNorm(), u[1].squaredNorm(), u[2].squaredNorm()});
+      const double denominator = (std::max)(u[1].cross(u[2]).norm(), 1e-6 * longest);
+      if(!(denominator > 0))
+        continue;
+      for(int k = 0; k < 3; ++k) // the angle at p[k] is between -u[(k+1)%3] and u[(k+2)%3]
+        add_edge(entries, t[(k + 1) % 3], t[(k + 2) % 3],
+                 -0.5 * u[(k + 1) % 3].dot(u[(k + 2) % 3]) / denominator);
     }
-    for(const Border_edge& b : mesh.border_edges)
-      add_edge(entries, b.v[0], b.v[1],
-               0.5 * cotangent(point(X0, b.v[0]), point(X0, b.v[1]), point(X0, b.v[2])));
     for(std::size_t i = 0; i < m_n; ++i)
       entries.emplace_back(static_cast<int>(i), static_cast<int>(i), diagonal_shift);
     m_S.resize(static_cast<int>(m_n), static_cast<int>(m_n));
@@ -121,13 +122,13 @@ private:
   // Lumped (barycentric) masses: a third of each incident triangle's area. A vertex with no
   // area around it (isolated, or only in degenerate triangles) gets the mean mass, so that
   // M stays invertible and in the mesh's units.
-  void assemble_mass(const Hinge_mesh& mesh, const Points& X0)
+  void assemble_mass(const Hinge_mesh& mesh, const Points& Y0)
   {
     m_mass = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_n));
     for(const auto& t : mesh.triangles)
     {
-      const auto p0 = point(X0, t[0]);
-      const double third_area = (point(X0, t[1]) - p0).cross(point(X0, t[2]) - p0).norm() / 6;
+      const auto p0 = point(Y0, t[0]);
+      const double third_area = (point(Y0, t[1]) - p0).cross(point(Y0, t[2]) - p0).norm() / 6;
       for(std::size_t v : t)
         m_mass[static_cast<Eigen::Index>(v)] += third_area;
     }
@@ -139,8 +140,9 @@ private:
   }
 
   std::size_t m_n;
+  double m_scale;
   Eigen::SparseMatrix<double> m_S;
-  Eigen::VectorXd m_mass, m_inverse_mass;
+  Eigen::VectorXd m_mass, m_inverse_mass; // of the scaled mesh
   Matrix m_A; // S in the solver's format; a solver may keep a pointer to it
   SparseLinearSolver m_solver;
   typename SparseLinearSolver::NT m_D = 1;

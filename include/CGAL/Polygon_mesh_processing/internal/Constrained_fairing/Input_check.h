@@ -1,0 +1,122 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The input contract of constrained_fairing(), checked before anything is computed. Meshes
+// come from files, so every defect a file can hold is a recoverable error with a message that
+// names it, in release builds too. Vertices and faces are named by their position, from 0, in
+// vertices(tmesh) and faces(tmesh): for a mesh read from a file, their order in the file.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_CHECK_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_CHECK_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+inline std::string epsilon_error(double epsilon)
+{
+  if(std::isfinite(epsilon) && epsilon > 0)
+    return std::string();
+  return "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")";
+}
+
+// Empty, broken, non-triangle, non-manifold or inconsistently oriented meshes. The energy's
+// dihedral angles need each interior edge to join exactly two triangles that run through it in
+// opposite directions; a halfedge structure ensures this for the faces it links across an edge,
+// but two of its faces may still share two vertices through separate edges.
+template <typename TriangleMesh, typename VertexIndexMap>
+std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& vertex_index)
+{
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  auto id = [&](auto v) { return std::to_string(get(vertex_index, v)); };
+
+  if(num_faces(tmesh) == 0)
+    return "the mesh has no faces";
+  // Before any walk along next(): a broken structure could send it around forever.
+  if(!is_valid_polygon_mesh(tmesh))
+    return "the mesh's halfedge structure is not valid (CGAL::is_valid_polygon_mesh() fails)";
+
+  // Each face's three directed edges, as (smaller vertex, larger vertex, face, halfedge).
+  struct Face_edge
+  {
+    std::size_t a, b, face;
+    halfedge_descriptor h;
+  };
+  std::vector<Face_edge> face_edges;
+  face_edges.reserve(3 * static_cast<std::size_t>(num_faces(tmesh)));
+  std::size_t face_number = 0;
+  for(auto f : faces(tmesh))
+  {
+    const auto around = halfedges_around_face(halfedge(f, tmesh), tmesh);
+    const auto degree = std::distance(around.begin(), around.end());
+    if(degree != 3)
+      return "face " + std::to_string(face_number) + " has " + std::to_string(degree) + " vertices: the mesh must be made of triangles";
+    for(halfedge_descriptor h : around)
+    {
+      const std::size_t s = get(vertex_index, source(h, tmesh)), t = get(vertex_index, target(h, tmesh));
+      face_edges.push_back(Face_edge{(std::min)(s, t), (std::max)(s, t), face_number, h});
+    }
+    ++face_number;
+  }
+  std::sort(face_edges.begin(), face_edges.end(), [](const Face_edge& x, const Face_edge& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.face < y.face;
+  });
+  for(std::size_t i = 0, j = 0; i < face_edges.size(); i = j)
+  {
+    while(j < face_edges.size() && face_edges[j].a == face_edges[i].a && face_edges[j].b == face_edges[i].b)
+      ++j;
+    const Face_edge &x = face_edges[i], &y = face_edges[i + 1];
+    const std::string edge = "vertices " + std::to_string(x.a) + " and " + std::to_string(x.b);
+    if(j - i > 2)
+      return "the edge between " + edge + " has " + std::to_string(j - i) + " faces (a non-manifold edge)";
+    if(j - i < 2 || opposite(x.h, tmesh) == y.h)
+      continue;
+    if(target(x.h, tmesh) == target(y.h, tmesh))
+      return "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) + " are oriented inconsistently: both run from vertex " +
+             id(source(x.h, tmesh)) + " to vertex " + id(target(x.h, tmesh));
+    return "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) + " share " + edge +
+           " through two different edges (a non-manifold edge)";
+  }
+
+  std::vector<halfedge_descriptor> pinched;
+  non_manifold_vertices(tmesh, std::back_inserter(pinched));
+  if(!pinched.empty())
+  {
+    std::size_t first = (std::numeric_limits<std::size_t>::max)();
+    for(halfedge_descriptor h : pinched)
+      first = (std::min)(first, static_cast<std::size_t>(get(vertex_index, target(h, tmesh))));
+    return "vertex " + std::to_string(first) + " is non-manifold: its faces form more than one fan";
+  }
+  return std::string();
+}
+
+// X0 holds the points of the vertices, numbered as in vertex_index.
+inline std::string coordinates_error(const Points& X0)
+{
+  for(Eigen::Index i = 0; i < X0.rows(); ++i)
+    if(!X0.row(i).allFinite())
+      return "vertex " + std::to_string(i) + " has a NaN or infinite coordinate";
+  return std::string();
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_CHECK_H
