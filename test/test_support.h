@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <random>
 #include <vector>
@@ -114,14 +115,18 @@ std::vector<Point> points(const PolygonMesh& m)
   return result;
 }
 
-// Bit-for-bit equality of two point lists.
+// Bit-for-bit equality of two point lists (NaN equals the same NaN, 0 differs from -0).
 inline bool identical(const std::vector<Point>& a, const std::vector<Point>& b)
 {
   if(a.size() != b.size())
     return false;
   for(std::size_t i = 0; i < a.size(); ++i)
-    if(!(a[i].x() == b[i].x() && a[i].y() == b[i].y() && a[i].z() == b[i].z()))
-      return false;
+    for(int c = 0; c < 3; ++c)
+    {
+      const double x = a[i][c], y = b[i][c];
+      if(std::memcmp(&x, &y, sizeof(double)) != 0)
+        return false;
+    }
   return true;
 }
 

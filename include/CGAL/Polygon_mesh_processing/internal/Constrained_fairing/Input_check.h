@@ -35,6 +35,28 @@ inline std::string epsilon_error(double epsilon)
   return "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")";
 }
 
+// The links that the walks below rely on: next() is a permutation whose cycles are the faces
+// and the holes, and opposite() pairs halfedges with swapped ends. CGAL::is_valid_polygon_mesh()
+// also demands that no vertex be isolated, which this contract allows, and that the faces
+// around a vertex form one fan, which gets its own message below.
+template <typename TriangleMesh>
+bool is_valid_structure(const TriangleMesh& tmesh)
+{
+  using Traits = boost::graph_traits<TriangleMesh>;
+  for(auto h : halfedges(tmesh))
+  {
+    const auto n = next(h, tmesh), o = opposite(h, tmesh);
+    if(n == Traits::null_halfedge() || o == Traits::null_halfedge() || o == h || opposite(o, tmesh) != h ||
+       prev(n, tmesh) != h || target(h, tmesh) == Traits::null_vertex() ||
+       target(h, tmesh) != target(opposite(n, tmesh), tmesh) || face(n, tmesh) != face(h, tmesh))
+      return false;
+  }
+  for(auto f : faces(tmesh))
+    if(halfedge(f, tmesh) == Traits::null_halfedge() || face(halfedge(f, tmesh), tmesh) != f)
+      return false;
+  return true;
+}
+
 // Empty, broken, non-triangle, non-manifold or inconsistently oriented meshes. The energy's
 // dihedral angles need each interior edge to join exactly two triangles that run through it in
 // opposite directions; a halfedge structure ensures this for the faces it links across an edge,
@@ -47,9 +69,8 @@ std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& 
 
   if(num_faces(tmesh) == 0)
     return "the mesh has no faces";
-  // Before any walk along next(): a broken structure could send it around forever.
-  if(!is_valid_polygon_mesh(tmesh))
-    return "the mesh's halfedge structure is not valid (CGAL::is_valid_polygon_mesh() fails)";
+  if(!is_valid_structure(tmesh))
+    return "the mesh's halfedge structure is broken (its next, prev, opposite, target and face links disagree)";
 
   // Each face's three directed edges, as (smaller vertex, larger vertex, face, halfedge).
   struct Face_edge

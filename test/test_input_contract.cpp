@@ -1,0 +1,249 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Every defect of the input contract, one by one: the call returns INVALID_INPUT with a message
+// naming the defect and the element, and leaves the mesh bit-identical. Isolated vertices are
+// allowed and do not move. A negative stopping threshold is a precondition.
+
+#include "test_support.h"
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+
+#include <CGAL/exceptions.h>
+
+#include <array>
+#include <limits>
+#include <string>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+using PMP::Constrained_fairing_status;
+using test::Mesh;
+using test::Point;
+using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
+using halfedge_descriptor = boost::graph_traits<Mesh>::halfedge_descriptor;
+
+// Connectivity alone, compared element by element.
+bool same_connectivity(const Mesh& a, const Mesh& b)
+{
+  if(num_vertices(a) != num_vertices(b) || num_halfedges(a) != num_halfedges(b) || num_faces(a) != num_faces(b))
+    return false;
+  auto hb = halfedges(b).begin();
+  for(halfedge_descriptor h : halfedges(a))
+  {
+    const halfedge_descriptor g = *hb++;
+    if(target(h, a) != target(g, b) || next(h, a) != next(g, b) || face(h, a) != face(g, b))
+      return false;
+  }
+  return true;
+}
+
+// Fairs a copy of m, expects INVALID_INPUT with `expected` in the message, and the copy
+// unchanged.
+void check_rejected(const Mesh& m, const std::string& expected, double eps = 0.1)
+{
+  Mesh copy = m;
+  const auto r = PMP::constrained_fairing(copy, eps);
+  std::cout << "  \"" << r.message << "\"" << std::endl;
+  CHECK(!r && r.status == Constrained_fairing_status::INVALID_INPUT);
+  CHECK(r.message.find(expected) != std::string::npos);
+  CHECK(r.number_of_iterations == 0);
+  CHECK(test::identical(test::points(copy), test::points(m)));
+  CHECK(same_connectivity(copy, m));
+}
+
+// The triangle (a, b, c) with three edges of its own, whose other sides are border: the faces
+// that add_face() refuses to glue (an edge with three faces, a face reversed against its
+// neighbour) share vertices this way.
+void add_detached_triangle(Mesh& m, std::array<vertex_descriptor, 3> v)
+{
+  const auto f = add_face(m);
+  std::array<halfedge_descriptor, 3> h, o;
+  for(int k = 0; k < 3; ++k)
+  {
+    h[k] = halfedge(add_edge(m), m);
+    o[k] = opposite(h[k], m);
+    set_target(h[k], v[(k + 1) % 3], m);
+    set_target(o[k], v[k], m);
+    set_face(h[k], f, m);
+    set_face(o[k], boost::graph_traits<Mesh>::null_face(), m);
+  }
+  for(int k = 0; k < 3; ++k)
+  {
+    set_next(h[k], h[(k + 1) % 3], m);
+    set_next(o[(k + 1) % 3], o[k], m);
+    if(halfedge(v[k], m) == boost::graph_traits<Mesh>::null_halfedge())
+      set_halfedge(v[k], o[k], m);
+  }
+  set_halfedge(f, h[0], m);
+}
+
+// A noisy patch of the plane, 4 x 4 vertices.
+Mesh patch()
+{
+  Mesh m = test::plane_patch(4);
+  test::add_noise(m, 0.05, 31);
+  return m;
+}
+
+void check_epsilon()
+{
+  const Mesh m = patch();
+  for(double eps : {0.0, -0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                    -std::numeric_limits<double>::infinity()})
+    check_rejected(m, "epsilon must be a positive finite number", eps);
+}
+
+void check_empty()
+{
+  check_rejected(Mesh(), "the mesh is empty");
+  Mesh points_only;
+  points_only.add_vertex(Point(0, 0, 0));
+  points_only.add_vertex(Point(1, 0, 0));
+  check_rejected(points_only, "the mesh has no faces");
+}
+
+void check_non_triangle_face()
+{
+  Mesh m = patch();
+  for(auto e : edges(m))
+    if(!is_border(e, m))
+    {
+      CGAL::Euler::join_face(halfedge(e, m), m);
+      break;
+    }
+  check_rejected(m, "has 4 vertices: the mesh must be made of triangles");
+  Mesh pentagon;
+  std::vector<vertex_descriptor> v;
+  for(int k = 0; k < 5; ++k)
+    v.push_back(pentagon.add_vertex(Point(std::cos(1.2566 * k), std::sin(1.2566 * k), 0)));
+  pentagon.add_face(v);
+  check_rejected(pentagon, "face 0 has 5 vertices");
+}
+
+void check_non_manifold_vertex()
+{
+  // Two triangles that touch at vertex 0 only.
+  Mesh m;
+  std::vector<vertex_descriptor> v;
+  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0.1), Point(0, -1, 0.1)})
+    v.push_back(m.add_vertex(p));
+  CHECK(m.add_face(v[0], v[1], v[2]) != Mesh::null_face());
+  CHECK(m.add_face(v[0], v[3], v[4]) != Mesh::null_face());
+  check_rejected(m, "vertex 0 is non-manifold");
+}
+
+void check_non_manifold_edge()
+{
+  // A fin: a third triangle on the edge between vertices 0 and 1 of a glued pair.
+  Mesh m;
+  std::vector<vertex_descriptor> v;
+  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0), Point(0.5, 0, 1)})
+    v.push_back(m.add_vertex(p));
+  m.add_face(v[0], v[1], v[2]);
+  m.add_face(v[1], v[0], v[3]);
+  add_detached_triangle(m, {v[0], v[1], v[4]});
+  check_rejected(m, "the edge between vertices 0 and 1 has 3 faces (a non-manifold edge)");
+
+  // Two faces through the same two vertices, by two different edges.
+  Mesh seam;
+  v.clear();
+  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)})
+    v.push_back(seam.add_vertex(p));
+  seam.add_face(v[0], v[1], v[2]);
+  add_detached_triangle(seam, {v[1], v[0], v[3]});
+  check_rejected(seam, "through two different edges (a non-manifold edge)");
+}
+
+void check_inconsistent_orientation()
+{
+  // The second triangle runs along the shared edge in the same direction as the first.
+  Mesh m;
+  std::vector<vertex_descriptor> v;
+  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)})
+    v.push_back(m.add_vertex(p));
+  m.add_face(v[0], v[1], v[2]);
+  add_detached_triangle(m, {v[0], v[1], v[3]});
+  check_rejected(m, "faces 0 and 1 are oriented inconsistently: both run from vertex 0 to vertex 1");
+}
+
+void check_broken_structure()
+{
+  Mesh m = patch();
+  // A face whose cycle of halfedges skips one: next() no longer matches prev().
+  const halfedge_descriptor h = halfedge(*faces(m).begin(), m);
+  set_next(h, h, m);
+  const std::vector<Point> input = test::points(m);
+  Mesh copy = m;
+  const auto r = PMP::constrained_fairing(copy, 0.1);
+  CHECK(!r && r.message.find("halfedge structure is broken") != std::string::npos);
+  CHECK(test::identical(test::points(copy), input));
+}
+
+void check_non_finite_coordinates()
+{
+  for(double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+  {
+    Mesh m = patch();
+    m.point(*std::next(vertices(m).begin(), 6)) = Point(0.3, bad, 0);
+    check_rejected(m, "vertex 6 has a NaN or infinite coordinate");
+  }
+}
+
+void check_no_area()
+{
+  Mesh m = patch();
+  for(auto v : vertices(m))
+    m.point(v) = Point(m.point(v).x(), 0, 0); // every vertex on the x axis
+  check_rejected(m, "all triangles of the mesh have zero area");
+}
+
+void check_isolated_vertices()
+{
+  Mesh m = patch();
+  const auto isolated = m.add_vertex(Point(5, 5, 5));
+  const std::vector<Point> input = test::points(m);
+  const auto r = PMP::constrained_fairing(m, 0.05);
+  CHECK(r && r.final_energy < r.initial_energy);
+  CHECK(m.point(isolated) == Point(5, 5, 5));
+  CHECK(!test::identical(test::points(m), input));
+}
+
+void check_threshold_precondition()
+{
+  Mesh m = patch();
+  const std::vector<Point> input = test::points(m);
+#ifdef CGAL_NO_PRECONDITIONS
+  // Release builds: a negative threshold never stops the iterations.
+  const auto r = PMP::constrained_fairing(m, 0.05, CFP::energy_decrease_threshold(-1.0).number_of_iterations(4));
+  CHECK(r.status == Constrained_fairing_status::ITERATION_LIMIT_REACHED && r.number_of_iterations == 4);
+#else
+  bool thrown = false;
+  try
+  {
+    PMP::constrained_fairing(m, 0.05, CFP::energy_decrease_threshold(-1.0));
+  }
+  catch(const CGAL::Precondition_exception&)
+  {
+    thrown = true;
+  }
+  CHECK(thrown);
+  CHECK(test::identical(test::points(m), input));
+#endif
+}
+
+int main()
+{
+  check_epsilon();
+  check_empty();
+  check_non_triangle_face();
+  check_non_manifold_vertex();
+  check_non_manifold_edge();
+  check_inconsistent_orientation();
+  check_broken_structure();
+  check_non_finite_coordinates();
+  check_no_area();
+  check_isolated_vertices();
+  check_threshold_precondition();
+  return test::report("test_input_contract");
+}
