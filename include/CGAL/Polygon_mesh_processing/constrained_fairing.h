@@ -63,10 +63,44 @@ The iterations stop when the energy decreased by less than `energy_decrease_thre
 iteration, on average over the last three iterations, when no feasible direction decreases it,
 or after `number_of_iterations` iterations.
 
+<b>Input.</b> The mesh is checked before anything else; a mesh that breaks this contract gives
+`Constrained_fairing_status::INVALID_INPUT`, a message naming the defect and the first
+vertex or face concerned (numbered from 0 in the order `vertices(tmesh)` and `faces(tmesh)`
+list them, which for a mesh read from a file is the file's order), and `tmesh` untouched.
+The checks, in the order they are made:
+- no vertex, or no face;
+- broken halfedge links (`next()`, `prev()`, `opposite()`, `target()` and `face()` disagree);
+- a face that is not a triangle;
+- a non-manifold edge: more than two faces on an edge, or two faces sharing two vertices
+  through two different edges;
+- two neighbouring faces oriented inconsistently (both run through their shared vertices in
+  the same direction): the dihedral angles of the energy need a consistent orientation;
+- a non-manifold vertex, whose faces form more than one fan;
+- a NaN or infinite coordinate;
+- `epsilon` negative, zero, NaN or infinite;
+- all triangles of zero area.
+
+Isolated vertices are allowed and do not move. Degenerate triangles are allowed: the hinges
+(interior edges with their two triangles) that have a triangle of (nearly) zero area in the
+input have no dihedral angle and are left out of the energy; their vertices are faired by
+their other hinges, which in practice opens the degenerate triangles. The areas and normals of
+the other triangles are regularized at a scale of 1e-9 of the mean triangle area, which keeps
+the energy finite if a triangle degenerates during the iterations; this changes nothing (in
+double) on triangles larger than a tenth of the mean. No NaN or infinity can reach the mesh.
+
+<b>All or nothing.</b> On `INVALID_INPUT` and `LINEAR_SOLVER_FAILED`, `tmesh` is left
+bit-identical. An exception thrown during the call (`std::bad_alloc`, or an exception from
+the callback or the linear solver) propagates, and `tmesh` is left bit-identical too, as
+long as `put()` on the vertex point map does not throw. A run stopped by the callback
+(`CANCELLED`) writes the last iterate, which is within the bound like every iterate.
+
+\pre `energy_decrease_threshold >= 0` (in builds without preconditions, a negative or NaN
+     threshold runs all `number_of_iterations` iterations)
+
 \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
-\param tmesh a triangle mesh, consistently oriented, without degenerate triangles
+\param tmesh a triangle mesh, manifold and consistently oriented, possibly with borders
 \param epsilon the largest distance a vertex may move, in the mesh's units
 \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones
           listed below; the parameters not in %CGAL are in the namespace
@@ -135,9 +169,7 @@ or after `number_of_iterations` iterations.
 \cgalNamedParamsEnd
 
 \return a `Constrained_fairing_result`: the status, the iterations, the energy before and
-        after, the largest deviation reached. On `INVALID_INPUT` (empty mesh, non-triangle
-        faces, non-finite coordinates or `epsilon`, `epsilon <= 0`, degenerate triangles)
-        and `LINEAR_SOLVER_FAILED`, `tmesh` is left untouched.
+        after, the largest deviation reached, and on failure the reason.
 
 \warning The computation is done in double precision, and so is the guarantee.
 */
@@ -170,9 +202,6 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
   CGAL_precondition(options.threshold >= 0);
 
   Constrained_fairing_result result;
-  result.message = CF::epsilon_error(epsilon);
-  if(!result.message.empty())
-    return result;
   if(num_vertices(tmesh) == 0)
   {
     result.message = "the mesh is empty";
@@ -196,6 +225,8 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
       CGAL::to_double(p.z());
   }
   result.message = CF::coordinates_error(X0);
+  if(result.message.empty())
+    result.message = CF::epsilon_error(epsilon);
   if(!result.message.empty())
     return result;
 
