@@ -33,6 +33,7 @@ expect "edge between vertices 0 and 1 has 3 faces" "$bad/non_manifold_edge.off" 
 expect "inconsistent orientation" "$bad/inconsistent_orientation.off" 0.1 "$out"
 expect "non-manifold vertex" "$bad/non_manifold_vertex.off" 0.1 "$out"
 expect "vertex 3 has a NaN or infinite coordinate" "$bad/nan.ply" 0.1 "$out"
+expect "face 1 of .* refers to vertex 1852400130, but there are 4 vertices" "$bad/face_index_out_of_range.ply" 0.1 "$out"
 expect "all triangles of the mesh have zero area" "$bad/zero_area.off" 0.1 "$out"
 for eps in 0 -1 nan inf 0.1x abc; do
   expect "epsilon\|EPS" "$data/head.off" "$eps" "$out"

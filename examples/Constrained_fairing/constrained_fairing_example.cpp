@@ -129,6 +129,11 @@ std::string read_mesh(const std::string& in, Mesh& mesh)
   Captured_cerr cgal;
   if(!CGAL::IO::read_polygon_soup(in, points, polygons))
     return "cannot read " + in + " as an OFF, OBJ, PLY or STL mesh" + cgal.reason();
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t i : polygons[f])
+      if(i >= points.size())
+        return "face " + std::to_string(f) + " of " + in + " refers to vertex " + std::to_string(i) + ", but there are " +
+               std::to_string(points.size()) + " vertices";
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
     return in + " is not a manifold, consistently oriented mesh: " + soup_defect(polygons);
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
