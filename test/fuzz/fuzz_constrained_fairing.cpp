@@ -51,18 +51,28 @@ std::string extension(const std::uint8_t* data, std::size_t size)
 }
 
 // CGAL 5.5's PLY reader appends a property to the last element without checking that an
-// element was declared (undefined behaviour on a "property" line before any "element").
+// element was declared, and dereferences a null pointer when a vertex coordinate is of another
+// type than float or double.
 bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
 {
   std::istringstream header(std::string(reinterpret_cast<const char*>(data), size));
-  bool element = false;
-  for(std::string line, keyword; std::getline(header, line);)
+  std::string element;
+  for(std::string line; std::getline(header, line);)
   {
-    std::istringstream(line) >> keyword; // the first word, as the reader splits it
+    std::istringstream words(line);
+    std::string keyword, type, name;
+    words >> keyword; // the first word, as the reader splits it
     if(keyword == "end_header")
       break;
-    element = element || keyword == "element";
-    if(keyword == "property" && !element)
+    if(keyword == "element" && !(words >> element))
+      return false;
+    if(keyword != "property")
+      continue;
+    if(element.empty())
+      return false;
+    words >> type >> name;
+    if(element == "vertex" && (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32" &&
+       type != "double" && type != "float64")
       return false;
   }
   return true;
