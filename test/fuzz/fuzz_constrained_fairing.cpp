@@ -51,8 +51,9 @@ std::string extension(const std::uint8_t* data, std::size_t size)
 }
 
 // CGAL 5.5's PLY reader appends a property to the last element without checking that an
-// element was declared, and dereferences a null pointer when a vertex coordinate is of another
-// type than float or double.
+// element was declared, dereferences a null pointer when a vertex coordinate is of another
+// type than float or double, and goes on reading past the end of the file as many items as
+// an element announces (billions, for a mutated count).
 bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
 {
   std::istringstream header(std::string(reinterpret_cast<const char*>(data), size));
@@ -64,7 +65,8 @@ bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
     words >> keyword; // the first word, as the reader splits it
     if(keyword == "end_header")
       break;
-    if(keyword == "element" && !(words >> element))
+    double count = 0;
+    if(keyword == "element" && !(words >> element >> count && count <= double(size)))
       return false;
     if(keyword != "property")
       continue;
