@@ -65,8 +65,10 @@ bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
     words >> keyword; // the first word, as the reader splits it
     if(keyword == "end_header")
       break;
-    double count = 0;
-    if(keyword == "element" && !(words >> element >> count && count <= double(size)))
+    std::string count;
+    if(keyword == "element" && !(words >> element >> count && count.size() <= 9 &&
+                                 count.find_first_not_of("0123456789") == std::string::npos &&
+                                 std::stoul(count) <= size))
       return false;
     if(keyword != "property")
       continue;
