@@ -3,8 +3,8 @@
 //
 // Meshes with 5 % of their triangles made degenerate (collinear vertices, duplicated vertices,
 // all three vertices at one point) are faired like any other: no NaN, the bound holds exactly,
-// the energy is finite and never rises, no new degenerate triangle appears, and two runs give
-// bit-identical results.
+// the energy is finite, never rises and falls as on any noisy mesh, no new degenerate triangle
+// appears, and two runs give bit-identical results.
 
 #include "test_support.h"
 
@@ -61,13 +61,14 @@ void check_fairing(const Mesh& clean, const std::string& name, Deviation_bound s
   std::cout << "  " << name << (shape == Deviation_bound::BALL ? ", ball: " : ", box: ") << changed << " of "
             << num_faces(m) << " faces made degenerate, " << degenerate << " degenerate faces -> "
             << degenerate_after << "; energy " << r.initial_energy << " -> " << r.final_energy << " in "
-            << r.number_of_iterations << " iterations: " << r.message << std::endl;
+            << r.number_of_iterations << " iterations " << r.message << std::endl;
 
   CHECK(r);
   CHECK(all_finite(output));
   CHECK(within_bound(output, input, 0.25 * h, shape));
   CHECK(std::isfinite(r.initial_energy) && std::isfinite(r.final_energy));
-  CHECK(r.final_energy < r.initial_energy);
+  // Degenerate triangles do not stall the fairing of the rest.
+  CHECK(r.final_energy < 0.5 * r.initial_energy);
   double previous = r.initial_energy;
   for(double e : energies)
   {
