@@ -51,33 +51,43 @@ std::string extension(const std::uint8_t* data, std::size_t size)
 }
 
 // CGAL 5.5's PLY reader appends a property to the last element without checking that an
-// element was declared, dereferences a null pointer when a vertex coordinate is of another
-// type than float or double, and goes on reading past the end of the file as many items as
-// an element announces (billions, for a mutated count).
+// element was declared, dereferences a null pointer when a vertex element lacks one of x, y, z
+// or has one of another type than float or double, and goes on reading past the end of the
+// file as many items as an element announces (billions, for a mutated count).
 bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
 {
   std::istringstream header(std::string(reinterpret_cast<const char*>(data), size));
   std::string element;
+  int coordinates = 7; // x, y, z of the current vertex element (bits 1, 2, 4) as float or double
   for(std::string line; std::getline(header, line);)
   {
     std::istringstream words(line);
-    std::string keyword, type, name;
+    std::string keyword, type, name, count;
     words >> keyword; // the first word, as the reader splits it
-    if(keyword == "end_header")
-      break;
-    std::string count;
-    if(keyword == "element" && !(words >> element >> count && count.size() <= 9 &&
-                                 count.find_first_not_of("0123456789") == std::string::npos &&
-                                 std::stoul(count) <= size))
-      return false;
-    if(keyword != "property")
-      continue;
-    if(element.empty())
-      return false;
-    words >> type >> name;
-    if(element == "vertex" && (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32" &&
-       type != "double" && type != "float64")
-      return false;
+    if(keyword == "end_header" || keyword == "element")
+    {
+      if(element == "vertex" && coordinates != 7)
+        return false;
+      if(keyword == "end_header")
+        return true;
+      if(!(words >> element >> count && count.size() <= 9 && count.find_first_not_of("0123456789") == std::string::npos &&
+           std::stoul(count) <= size))
+        return false;
+      coordinates = 0;
+    }
+    else if(keyword == "property")
+    {
+      if(element.empty())
+        return false;
+      words >> type >> name;
+      const int bit = name == "x" ? 1 : name == "y" ? 2 : name == "z" ? 4 : 0;
+      if(element == "vertex" && bit != 0)
+      {
+        if((coordinates & bit) || !(type == "float" || type == "float32" || type == "double" || type == "float64"))
+          return false;
+        coordinates |= bit;
+      }
+    }
   }
   return true;
 }
