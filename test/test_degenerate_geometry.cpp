@@ -64,6 +64,7 @@ void check_fairing(const Mesh& clean, const std::string& name, Deviation_bound s
             << r.number_of_iterations << " iterations " << r.message << std::endl;
 
   CHECK(r);
+  CHECK(r.number_of_degenerate_edges >= changed);
   CHECK(all_finite(output));
   CHECK(within_bound(output, input, 0.25 * h, shape));
   CHECK(std::isfinite(r.initial_energy) && std::isfinite(r.final_energy));

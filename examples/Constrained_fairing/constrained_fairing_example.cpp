@@ -206,6 +206,9 @@ int main(int argc, char* argv[])
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
             << ", " << result.number_of_cg_iterations << " conjugate gradient iterations)" << std::endl;
   std::cout << "energy:      " << result.initial_energy << " -> " << result.final_energy << std::endl;
+  if(result.number_of_degenerate_edges > 0)
+    std::cout << "degenerate:  " << result.number_of_degenerate_edges
+              << " edges with a degenerate triangle, left out of the energy" << std::endl;
   std::cout << "deviation:   " << result.max_deviation << " at most (bound " << epsilon << ")" << std::endl;
   std::cout << "time:        " << seconds.count() << " s" << std::endl;
 

@@ -46,6 +46,9 @@ struct Constrained_fairing_result
   double final_energy = 0;
   /// the largest Euclidean distance of an output vertex to its input position
   double max_deviation = 0;
+  /// the interior edges left out of the energy because one of their two triangles is
+  /// degenerate (of nearly zero area) in the input
+  std::size_t number_of_degenerate_edges = 0;
 
   /// `true` when the mesh holds a faired result
   explicit operator bool() const

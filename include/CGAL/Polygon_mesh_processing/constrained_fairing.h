@@ -238,6 +238,7 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
     return result;
   }
   result.initial_energy = result.final_energy = energy.value(X0);
+  result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
   result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
   if(options.max_iterations == 0)
     return result;
