@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -92,12 +93,53 @@ bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
   return true;
 }
 
+// CGAL 5.5's OFF scanner overflows its buffer on some malformed colour entries: OFF files
+// are read only in their plain form (an "OFF" line, the counts, then lines of exactly three
+// numbers and of a count followed by that many indices; no colour, no normal).
+bool is_plain_off(const std::uint8_t* data, std::size_t size)
+{
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  std::vector<std::vector<std::string> > lines;
+  for(std::string line; std::getline(in, line);)
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::vector<std::string> tokens;
+    for(std::string token; words >> token;)
+      tokens.push_back(token);
+    if(!tokens.empty())
+      lines.push_back(tokens);
+  }
+  auto is_count = [&](const std::string& t) {
+    return !t.empty() && t.size() <= 9 && t.find_first_not_of("0123456789") == std::string::npos && std::stoul(t) <= size;
+  };
+  auto is_number = [](const std::string& t) {
+    char* end = nullptr;
+    std::strtod(t.c_str(), &end);
+    return end == t.c_str() + t.size();
+  };
+  if(lines.size() < 2 || lines[0] != std::vector<std::string>{"OFF"} || lines[1].size() != 3 ||
+     !(is_count(lines[1][0]) && is_count(lines[1][1]) && is_count(lines[1][2])))
+    return false;
+  const std::size_t nv = std::stoul(lines[1][0]), nf = std::stoul(lines[1][1]);
+  if(lines.size() != 2 + nv + nf)
+    return false;
+  for(std::size_t i = 2; i < 2 + nv; ++i)
+    if(lines[i].size() != 3 || !(is_number(lines[i][0]) && is_number(lines[i][1]) && is_number(lines[i][2])))
+      return false;
+  for(std::size_t i = 2 + nv; i < lines.size(); ++i)
+    if(!is_count(lines[i][0]) || lines[i].size() != 1 + std::stoul(lines[i][0]) ||
+       !std::all_of(lines[i].begin() + 1, lines[i].end(), is_count))
+      return false;
+  return true;
+}
+
 // Inputs that meet a known defect of CGAL 5.5's readers are left out, the search being about
 // what comes after reading. The mesh builder (Generic_facegraph_builder) does not check that
 // face indices are below the number of vertices, and reads out of bounds when they are not.
 bool is_readable(const std::string& path, const std::uint8_t* data, std::size_t size)
 {
-  if(path.substr(path.size() - 4) == ".ply" && !is_sane_ply_header(data, size))
+  const std::string extension = path.substr(path.size() - 4);
+  if((extension == ".ply" && !is_sane_ply_header(data, size)) || (extension == ".off" && !is_plain_off(data, size)))
     return false;
   std::vector<K::Point_3> points;
   std::vector<std::vector<std::size_t> > polygons;
