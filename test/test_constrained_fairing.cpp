@@ -25,23 +25,7 @@ using test::Mesh;
 using test::Point;
 using Polyhedron = CGAL::Polyhedron_3<test::K, CGAL::Polyhedron_items_with_id_3>;
 
-// The largest violation of the bound, as a user computes it: 0 when it holds exactly.
-double bound_violation(const std::vector<Point>& out, const std::vector<Point>& in, double eps, Deviation_bound shape)
-{
-  double violation = 0;
-  for(std::size_t i = 0; i < in.size(); ++i)
-  {
-    if(shape == Deviation_bound::BALL)
-    {
-      const double d2 = CGAL::squared_distance(out[i], in[i]);
-      violation = (std::max)({violation, d2 - eps * eps, std::sqrt(d2) - eps});
-    }
-    else
-      for(int c = 0; c < 3; ++c)
-        violation = (std::max)(violation, std::abs(out[i][c] - in[i][c]) - eps);
-  }
-  return violation;
-}
+using test::bound_violation;
 
 double rms_distance_to_unit_sphere(const Mesh& m)
 {

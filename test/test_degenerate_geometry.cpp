@@ -28,20 +28,6 @@ bool all_finite(const std::vector<Point>& points)
   return true;
 }
 
-bool within_bound(const std::vector<Point>& out, const std::vector<Point>& in, double eps, Deviation_bound shape)
-{
-  for(std::size_t i = 0; i < in.size(); ++i)
-  {
-    const double d2 = CGAL::squared_distance(out[i], in[i]);
-    if(shape == Deviation_bound::BALL && !(d2 <= eps * eps && std::sqrt(d2) <= eps))
-      return false;
-    for(int c = 0; shape == Deviation_bound::BOX && c < 3; ++c)
-      if(!(std::abs(out[i][c] - in[i][c]) <= eps))
-        return false;
-  }
-  return true;
-}
-
 void check_fairing(const Mesh& clean, const std::string& name, Deviation_bound shape)
 {
   Mesh m = clean;
@@ -66,7 +52,7 @@ void check_fairing(const Mesh& clean, const std::string& name, Deviation_bound s
   CHECK(r);
   CHECK(r.number_of_degenerate_edges >= changed);
   CHECK(all_finite(output));
-  CHECK(within_bound(output, input, 0.25 * h, shape));
+  CHECK(test::bound_violation(output, input, 0.25 * h, shape) <= 0);
   CHECK(std::isfinite(r.initial_energy) && std::isfinite(r.final_energy));
   // Degenerate triangles do not stall the fairing of the rest.
   CHECK(r.final_energy < 0.5 * r.initial_energy);

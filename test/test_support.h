@@ -183,6 +183,34 @@ std::size_t number_of_degenerate_faces(const PolygonMesh& m)
   return std::size_t(std::count_if(areas.begin(), areas.end(), [&](double a) { return a <= threshold; }));
 }
 
+// The largest violation of the bound, as a user computes it: 0 or less when it holds exactly
+// (the ball's squared distance against eps^2 and its square root against eps; the box's
+// coordinates one by one). NaN in a point makes it NaN, which no test takes for "holds".
+template <typename Shape>
+double bound_violation(const std::vector<Point>& out, const std::vector<Point>& in, double eps, Shape shape)
+{
+  double violation = 0;
+  for(std::size_t i = 0; i < in.size(); ++i)
+  {
+    if(shape == Shape::BALL)
+    {
+      const double d2 = CGAL::squared_distance(out[i], in[i]);
+      violation = (std::max)({violation, d2 - eps * eps, std::sqrt(d2) - eps});
+      if(std::isnan(d2))
+        return d2;
+    }
+    else
+      for(int c = 0; c < 3; ++c)
+      {
+        const double d = std::abs(out[i][c] - in[i][c]);
+        if(std::isnan(d))
+          return d;
+        violation = (std::max)(violation, d - eps);
+      }
+  }
+  return violation;
+}
+
 inline double mean_edge_length(const Mesh& m)
 {
   double sum = 0;

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -246,7 +247,8 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
   const CF::Feasible_set omega(X0, epsilon, shape);
   CF::Points X = X0;
   CF::Active_set_newton<Sparse_linear_solver> solver(
-    mesh, X0, omega, choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver)));
+    mesh, X0, omega, std::move(energy),
+    choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver)));
   solver.run(X, options, callback, result);
   if(!result)
     return result;

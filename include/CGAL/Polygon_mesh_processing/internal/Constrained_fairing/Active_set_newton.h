@@ -23,6 +23,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Thin_plate_hessian.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -51,9 +52,10 @@ public:
   static constexpr double sufficient_decrease = 0.01;
   static constexpr std::size_t window = 3;
 
-  Active_set_newton(const Hinge_mesh& mesh, const Points& X0, const Feasible_set& omega,
+  // `energy` is the bending energy of `mesh`, set up on X0.
+  Active_set_newton(const Hinge_mesh& mesh, const Points& X0, const Feasible_set& omega, Bending_energy energy,
                     const SparseLinearSolver& solver)
-    : m_mesh(mesh), m_X0(X0), m_omega(omega), m_energy(mesh, X0), m_solver(solver)
+    : m_mesh(mesh), m_X0(X0), m_omega(omega), m_energy(std::move(energy)), m_solver(solver)
   {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
