@@ -52,7 +52,8 @@ std::string extension(const std::uint8_t* data, std::size_t size)
 }
 
 // CGAL 5.5's PLY reader appends a property to the last element without checking that an
-// element was declared, dereferences a null pointer when a vertex element lacks one of x, y, z
+// element was declared, dereferences a null pointer when a vertex element ("vertex" or
+// "vertices") lacks one of x, y, z
 // or has one of another type than float or double, and goes on reading past the end of the
 // file as many items as an element announces (billions, for a mutated count).
 bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
@@ -67,7 +68,7 @@ bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
     words >> keyword; // the first word, as the reader splits it
     if(keyword == "end_header" || keyword == "element")
     {
-      if(element == "vertex" && coordinates != 7)
+      if((element == "vertex" || element == "vertices") && coordinates != 7)
         return false;
       if(keyword == "end_header")
         return true;
@@ -82,7 +83,7 @@ bool is_sane_ply_header(const std::uint8_t* data, std::size_t size)
         return false;
       words >> type >> name;
       const int bit = name == "x" ? 1 : name == "y" ? 2 : name == "z" ? 4 : 0;
-      if(element == "vertex" && bit != 0)
+      if((element == "vertex" || element == "vertices") && bit != 0)
       {
         if((coordinates & bit) || !(type == "float" || type == "float32" || type == "double" || type == "float64"))
           return false;
