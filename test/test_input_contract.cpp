@@ -12,6 +12,7 @@
 #include <CGAL/exceptions.h>
 
 #include <array>
+#include <initializer_list>
 #include <limits>
 #include <string>
 
@@ -103,6 +104,15 @@ void check_empty()
   check_rejected(points_only, "the mesh has no faces");
 }
 
+// Adds these vertices to m, in order.
+std::vector<vertex_descriptor> add_vertices(Mesh& m, std::initializer_list<Point> points)
+{
+  std::vector<vertex_descriptor> v;
+  for(const Point& p : points)
+    v.push_back(m.add_vertex(p));
+  return v;
+}
+
 void check_non_triangle_face()
 {
   Mesh m = patch();
@@ -114,10 +124,8 @@ void check_non_triangle_face()
     }
   check_rejected(m, "has 4 vertices: the mesh must be made of triangles");
   Mesh pentagon;
-  std::vector<vertex_descriptor> v;
-  for(int k = 0; k < 5; ++k)
-    v.push_back(pentagon.add_vertex(Point(std::cos(1.2566 * k), std::sin(1.2566 * k), 0)));
-  pentagon.add_face(v);
+  pentagon.add_face(add_vertices(pentagon, {Point(1, 0, 0), Point(0.3, 0.95, 0), Point(-0.8, 0.6, 0), Point(-0.8, -0.6, 0),
+                                            Point(0.3, -0.95, 0)}));
   check_rejected(pentagon, "face 0 has 5 vertices");
 }
 
@@ -125,9 +133,7 @@ void check_non_manifold_vertex()
 {
   // Two triangles that touch at vertex 0 only.
   Mesh m;
-  std::vector<vertex_descriptor> v;
-  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0.1), Point(0, -1, 0.1)})
-    v.push_back(m.add_vertex(p));
+  const auto v = add_vertices(m, {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0.1), Point(0, -1, 0.1)});
   CHECK(m.add_face(v[0], v[1], v[2]) != Mesh::null_face());
   CHECK(m.add_face(v[0], v[3], v[4]) != Mesh::null_face());
   check_rejected(m, "vertex 0 is non-manifold");
@@ -137,9 +143,7 @@ void check_non_manifold_edge()
 {
   // A fin: a third triangle on the edge between vertices 0 and 1 of a glued pair.
   Mesh m;
-  std::vector<vertex_descriptor> v;
-  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0), Point(0.5, 0, 1)})
-    v.push_back(m.add_vertex(p));
+  auto v = add_vertices(m, {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0), Point(0.5, 0, 1)});
   m.add_face(v[0], v[1], v[2]);
   m.add_face(v[1], v[0], v[3]);
   add_detached_triangle(m, {v[0], v[1], v[4]});
@@ -147,9 +151,7 @@ void check_non_manifold_edge()
 
   // Two faces through the same two vertices, by two different edges.
   Mesh seam;
-  v.clear();
-  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)})
-    v.push_back(seam.add_vertex(p));
+  v = add_vertices(seam, {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)});
   seam.add_face(v[0], v[1], v[2]);
   add_detached_triangle(seam, {v[1], v[0], v[3]});
   check_rejected(seam, "through two different edges (a non-manifold edge)");
@@ -159,9 +161,7 @@ void check_inconsistent_orientation()
 {
   // The second triangle runs along the shared edge in the same direction as the first.
   Mesh m;
-  std::vector<vertex_descriptor> v;
-  for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)})
-    v.push_back(m.add_vertex(p));
+  const auto v = add_vertices(m, {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)});
   m.add_face(v[0], v[1], v[2]);
   add_detached_triangle(m, {v[0], v[1], v[3]});
   check_rejected(m, "faces 0 and 1 are oriented inconsistently: both run from vertex 0 to vertex 1");
