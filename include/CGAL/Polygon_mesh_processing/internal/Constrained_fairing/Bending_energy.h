@@ -61,7 +61,7 @@ public:
       const auto& v = m_mesh.triangles[f];
       double longest = 0;
       for(int k = 0; k < 3; ++k)
-        longest = (std::max)(longest, (point(m_Y, v[k]) - point(m_Y, v[(k + 1) % 3])).squaredNorm());
+        longest = (std::max)(longest, (point(*m_points, v[k]) - point(*m_points, v[(k + 1) % 3])).squaredNorm());
       degenerate[f] = !(m_doubled_area[f] > degenerate_area * longest);
     }
     m_delta = m_mesh.triangles.empty() ? 0 : area_regularization * sum / double(m_mesh.triangles.size());
@@ -120,26 +120,33 @@ public:
       const auto& v = m_mesh.triangles[f];
       const Eigen::Vector3d a = point(m_coefficient, f);
       for(int k = 0; k < 3; ++k)
-        point(G, v[k]) += a.cross(point(m_Y, v[(k + 2) % 3]) - point(m_Y, v[(k + 1) % 3]));
+        point(G, v[k]) += a.cross(point(*m_points, v[(k + 2) % 3]) - point(*m_points, v[(k + 1) % 3]));
     }
-    G *= m_scale; // back from the scaled points: E(s X) = E(X)
+    if(m_scale != 1)
+      G *= m_scale; // back from the scaled points: E(s X) = E(X)
     return energy;
   }
 
 private:
-  // The scaled points Y = s X, and the regularized doubled area l and normal n of every
+  // The scaled points s X, and the regularized doubled area l and normal n of every
   // triangle.
   void compute_triangles(const Points& X)
   {
-    m_Y.noalias() = m_scale * X;
+    if(m_scale == 1)
+      m_points = &X;
+    else
+    {
+      m_scaled.noalias() = m_scale * X;
+      m_points = &m_scaled;
+    }
     const std::size_t nt = m_mesh.triangles.size();
     m_normal.resize(static_cast<Eigen::Index>(nt), 3);
     m_doubled_area.resize(nt);
     for(std::size_t f = 0; f < nt; ++f)
     {
       const auto& v = m_mesh.triangles[f];
-      const Eigen::Vector3d p0 = point(m_Y, v[0]);
-      const Eigen::Vector3d N = (point(m_Y, v[1]) - p0).cross(point(m_Y, v[2]) - p0);
+      const Eigen::Vector3d p0 = point(*m_points, v[0]);
+      const Eigen::Vector3d N = (point(*m_points, v[1]) - p0).cross(point(*m_points, v[2]) - p0);
       const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
       m_doubled_area[f] = l;
       point(m_normal, f) = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
@@ -152,7 +159,7 @@ private:
     double l1, l2, L, S, C;
 
     Hinge_terms(const Bending_energy& E, const Hinge& h)
-      : e(point(E.m_Y, h.v[1]) - point(E.m_Y, h.v[0])), n1(point(E.m_normal, h.f[0])),
+      : e(point(*E.m_points, h.v[1]) - point(*E.m_points, h.v[0])), n1(point(E.m_normal, h.f[0])),
         n2(point(E.m_normal, h.f[1])), l1(E.m_doubled_area[h.f[0]]), l2(E.m_doubled_area[h.f[1]]),
         L(e.squaredNorm()), S(l1 + l2), C(0.5 * (n1 - n2).squaredNorm())
     {}
@@ -163,8 +170,10 @@ private:
   const Hinge_mesh& m_mesh;
   std::vector<Hinge> m_hinges; // those of m_mesh without a degenerate triangle
   double m_scale, m_delta = 0;
-  // recomputed at each evaluation: the scaled points, and per triangle
-  Points m_Y, m_normal, m_coefficient;
+  // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and per
+  // triangle
+  const Points* m_points = nullptr;
+  Points m_scaled, m_normal, m_coefficient;
   std::vector<double> m_doubled_area;
 };
 

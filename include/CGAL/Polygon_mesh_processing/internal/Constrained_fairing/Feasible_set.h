@@ -90,7 +90,7 @@ public:
         continue;
       }
       const Eigen::Vector3d d = point(Y, i) - point(m_X0, i);
-      const double r = d.stableNorm();
+      const double r = norm(d);
       if(r >= m_eps - sphere_tolerance(i))
       {
         if(r > 0)
@@ -128,9 +128,9 @@ private:
     const Eigen::Vector3d d = point(X, i) - c;
     // Scale the offset onto the sphere. Rounding the coordinates may leave the result just
     // outside; aim a little inside then, by a slack that starts at that rounding error. The
-    // centre, reached at worst, is inside. stableNorm() keeps r from underflowing to zero;
-    // an offset that overflows (X must be finite, not X - c) goes to the centre.
-    const double r = d.stableNorm();
+    // centre, reached at worst, is inside. An offset that overflows (X must be finite, not
+    // X - c) goes to the centre.
+    const double r = norm(d);
     if(r < std::numeric_limits<double>::infinity())
       for(double slack = 0; slack < m_eps; slack = (slack == 0) ? rounding_error(i) : 2 * slack)
       {
@@ -139,6 +139,14 @@ private:
           return;
       }
     point(X, i) = c;
+  }
+
+  // |d|, without underflow to 0 or overflow to infinity where |d| itself is in range (the
+  // plain formula first: the careful one is several times slower).
+  static double norm(const Eigen::Vector3d& d)
+  {
+    const double r = d.norm();
+    return (r > 0 && r < std::numeric_limits<double>::infinity()) ? r : d.stableNorm();
   }
 
   double rounding_error(std::size_t i) const

@@ -39,17 +39,18 @@ inline Eigen::Map<Eigen::Vector3d> point(Points& X, std::size_t i)
   return Eigen::Map<Eigen::Vector3d>(X.data() + 3 * i);
 }
 
-// The power of two that brings the largest coordinate of X into [1/2, 1). The energy and its
-// Hessian are evaluated on scaled points: a power of two scales every intermediate result
-// exactly, so this only keeps squared areas of a mesh in kilometres or nanometres inside
-// the range of double.
+// The scale, a power of two, at which the energy and its Hessian are evaluated: 1 when the
+// largest coordinate of X is within [2^-100, 2^100], where squared areas of any mesh that is
+// not a single point fit in double; otherwise the one that brings it into [1/2, 1), for meshes
+// in kilometres or nanometres of absurd units. A power of two scales every intermediate
+// result exactly.
 inline double unit_scale(const Points& X)
 {
   const double largest = X.size() > 0 ? X.cwiseAbs().maxCoeff() : 0;
-  if(!(largest > 0))
-    return 1;
   int exponent = 0;
   std::frexp(largest, &exponent);
+  if(!(largest > 0) || (exponent > -100 && exponent <= 100))
+    return 1;
   return std::ldexp(1., (std::max)(-1000, (std::min)(1000, -exponent)));
 }
 
