@@ -84,7 +84,10 @@ void check_solver_failure()
       try
       {
         const auto r = PMP::constrained_fairing(
-          m, 0.05, CGAL::parameters::sparse_linear_solver(Failing_solver{Failing_solver::Base(), fail_at, throws, &calls}));
+          m, 0.05,
+          CFP::fairing_method(PMP::Constrained_fairing_method::ACTIVE_SET_NEWTON,
+                              CGAL::parameters::sparse_linear_solver(
+                                Failing_solver{Failing_solver::Base(), fail_at, throws, &calls})));
         CHECK(r.status == Constrained_fairing_status::LINEAR_SOLVER_FAILED && !r.message.empty());
       }
       catch(const std::runtime_error&)

@@ -36,10 +36,13 @@ struct Constrained_fairing_result
   Constrained_fairing_status status = Constrained_fairing_status::INVALID_INPUT;
   /// a human readable reason when `status` is a failure, empty otherwise
   std::string message;
-  /// iterations done (one Cauchy step, then one Newton step in the default method)
+  /// iterations done: accepted steps of the quasi-Newton method (the default); a Cauchy step
+  /// followed by a Newton step for `ACTIVE_SET_NEWTON`; a Cauchy step for `PROJECTED_GRADIENT`
   std::size_t number_of_iterations = 0;
-  /// conjugate gradient iterations over all Newton steps: the main cost of the default method
+  /// conjugate gradient iterations over all Newton steps (`ACTIVE_SET_NEWTON` only)
   std::size_t number_of_cg_iterations = 0;
+  /// evaluations of the energy, with or without its gradient: the main cost of the default method
+  std::size_t number_of_energy_evaluations = 0;
   /// the bending energy of the input mesh
   double initial_energy = 0;
   /// the bending energy of the output mesh

@@ -7,9 +7,11 @@
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set_newton.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Feasible_set.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_lbfgs.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/assertions.h>
@@ -38,6 +40,32 @@ struct Always_continue
 
 using Default_sparse_linear_solver =
   CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
+
+// Runs the method of `options` within `bound`.
+template <typename Bound, typename SparseLinearSolver, typename Callback>
+Solver_report fair(const Hinge_mesh& mesh, const Bound& bound, Bending_energy& energy, Constrained_fairing_method method,
+                   const Solver_options& options, const SparseLinearSolver& solver, const Callback& callback, Points& X)
+{
+  if(method == Constrained_fairing_method::QUASI_NEWTON)
+    return Projected_lbfgs<Bound>(bound, energy).run(X, options, callback);
+  return Active_set_newton<Bound, SparseLinearSolver>(mesh, bound, energy, solver).run(X, options, callback);
+}
+
+// The stopping rule of each method when the user sets none: the quasi-Newton method's energy
+// decreases in small, uneven steps long after the noise is gone, so it is judged over more
+// iterations and against a smaller threshold.
+inline Solver_options default_options(Constrained_fairing_method method)
+{
+  Solver_options options;
+  if(method == Constrained_fairing_method::QUASI_NEWTON)
+  {
+    options.threshold = 1e-4;
+    options.window = 10;
+    options.max_iterations = 1000;
+  }
+  options.cauchy_steps_only = method == Constrained_fairing_method::PROJECTED_GRADIENT;
+  return options;
+}
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -191,15 +219,17 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
 
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tmesh));
-  CF::Solver_options options;
+  const Constrained_fairing_method method =
+    choose_parameter(get_parameter(np, CF::fairing_method), Constrained_fairing_method::QUASI_NEWTON);
+  CF::Solver_options options = CF::default_options(method);
   options.max_iterations = static_cast<std::size_t>(
     choose_parameter(get_parameter(np, internal_np::number_of_iterations), options.max_iterations));
-  options.method = choose_parameter(get_parameter(np, CF::fairing_method), options.method);
   options.threshold = choose_parameter(get_parameter(np, CF::energy_decrease_threshold), options.threshold);
   options.cg_iterations = (std::max)(std::size_t(1), static_cast<std::size_t>(choose_parameter(
     get_parameter(np, CF::conjugate_gradient_iterations), options.cg_iterations)));
   const Deviation_bound shape = choose_parameter(get_parameter(np, CF::deviation_bound), Deviation_bound::BALL);
   const auto callback = choose_parameter(get_parameter(np, CF::iteration_callback), CF::Always_continue());
+  const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
   CGAL_precondition(options.threshold >= 0);
 
   Constrained_fairing_result result;
@@ -215,6 +245,8 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
   for(auto v : vertices(tmesh))
     put(vertex_index, v, n++);
   result.message = CF::connectivity_error(tmesh, vertex_index);
+  if(result.message.empty())
+    result.message = CF::size_error(tmesh);
   if(!result.message.empty())
     return result;
 
@@ -244,16 +276,31 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
   if(options.max_iterations == 0)
     return result;
 
-  const CF::Feasible_set omega(X0, epsilon, shape);
   CF::Points X = X0;
-  CF::Active_set_newton<Sparse_linear_solver> solver(
-    mesh, X0, omega, std::move(energy),
-    choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver)));
-  solver.run(X, options, callback, result);
+  CF::Solver_report report;
+  if(shape == Deviation_bound::BALL)
+  {
+    const CF::Ball_bound bound(X0, epsilon);
+    report = CF::fair(mesh, bound, energy, method, options, solver, callback, X);
+    result.max_deviation = bound.max_deviation(X);
+  }
+  else
+  {
+    const CF::Box_bound bound(X0, epsilon);
+    report = CF::fair(mesh, bound, energy, method, options, solver, callback, X);
+    result.max_deviation = bound.max_deviation(X);
+  }
+  result.status = report.status;
+  result.message = report.message;
+  result.number_of_iterations = report.iterations;
+  result.number_of_cg_iterations = report.cg_iterations;
+  result.number_of_energy_evaluations = report.energy_evaluations;
   if(!result)
+  {
+    result.max_deviation = 0;
     return result;
-
-  result.max_deviation = omega.max_deviation(X);
+  }
+  result.final_energy = report.final_energy;
   for(auto v : vertices(tmesh))
   {
     const auto i = static_cast<std::size_t>(get(vertex_index, v));

@@ -24,9 +24,14 @@ enum class Deviation_bound
 /// The optimization method of `constrained_fairing()`.
 enum class Constrained_fairing_method
 {
+  /// A projected limited-memory BFGS (quasi-Newton) method: the descent direction comes from the
+  /// last few steps and gradient changes, restricted to the constraints that bind; no linear
+  /// system is solved. The default: it reaches a given energy several times sooner than the
+  /// paper's methods, and goes lower.
+  QUASI_NEWTON,
   /// The active set Newton method of Hildebrandt and Polthier: a Cauchy step along the projected
   /// gradient, then a Newton step on the free variables, preconditioned by a thin plate
-  /// Hessian factorized once. The default.
+  /// Hessian factorized once.
   ACTIVE_SET_NEWTON,
   /// Cauchy steps only: the explicit projected gradient descent that the paper compares
   /// against. Cheaper per iteration, far more iterations on irregular meshes.

@@ -24,15 +24,24 @@
 //    A triangle collapsing to zero area gets a zero normal instead of an undefined
 //    one, and its hinges cost about as much as a bend between unit normals 60 degrees apart.
 // The energy and its gradient are then finite on every configuration of the points.
+//
+// Evaluation. The energy and its gradient are the solver's main cost, so they are computed
+// in three passes that each write every output once, in parallel (Parallel_for.h) and with no
+// allocation once the buffers have their sizes: the triangles' normals and areas; per
+// triangle, the terms of its (at most three) hinges, each hinge's energy counted half by each
+// of its triangles; per vertex, the gradient gathered from its corners and edges.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -53,21 +62,20 @@ public:
   Bending_energy(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_scale(unit_scale(X0))
   {
     compute_triangles(X0);
+    const std::size_t nt = m_mesh.triangles.size();
     double sum = 0; // of the unregularized doubled areas, delta being 0 so far
-    std::vector<bool> degenerate(m_mesh.triangles.size());
-    for(std::size_t f = 0; f < m_mesh.triangles.size(); ++f)
+    std::vector<bool> degenerate(nt);
+    for(std::size_t f = 0; f < nt; ++f)
     {
-      sum += m_doubled_area[f];
+      sum += m_frame[f].l;
       const auto& v = m_mesh.triangles[f];
       double longest = 0;
       for(int k = 0; k < 3; ++k)
         longest = (std::max)(longest, (point(*m_points, v[k]) - point(*m_points, v[(k + 1) % 3])).squaredNorm());
-      degenerate[f] = !(m_doubled_area[f] > degenerate_area * longest);
+      degenerate[f] = !(m_frame[f].l > degenerate_area * longest);
     }
-    m_delta = m_mesh.triangles.empty() ? 0 : area_regularization * sum / double(m_mesh.triangles.size());
-    for(const Hinge& h : m_mesh.hinges)
-      if(!degenerate[h.f[0]] && !degenerate[h.f[1]])
-        m_hinges.push_back(h);
+    m_delta = nt == 0 ? 0 : area_regularization * sum / double(nt);
+    build_adjacency(degenerate);
   }
 
   // False if the input has no area at all (in double): then the regularization vanishes
@@ -75,15 +83,12 @@ public:
   bool is_defined() const { return m_delta * m_delta > 0; }
 
   // The number of hinges left out because of a degenerate triangle.
-  std::size_t number_of_degenerate_hinges() const { return m_mesh.hinges.size() - m_hinges.size(); }
+  std::size_t number_of_degenerate_hinges() const { return m_mesh.hinges.size() - m_number_of_hinges; }
 
   double value(const Points& X)
   {
     compute_triangles(X);
-    double energy = 0;
-    for(const Hinge& h : m_hinges)
-      energy += Hinge_terms(*this, h).energy();
-    return energy;
+    return triangle_pass<false>();
   }
 
   // Returns the energy and writes its gradient to G (resized to X's shape). With
@@ -98,36 +103,94 @@ public:
   double value_and_gradient(const Points& X, Points& G)
   {
     compute_triangles(X);
-    const std::size_t nt = m_mesh.triangles.size();
-    m_coefficient.setZero(static_cast<Eigen::Index>(nt), 3);
-    G.setZero(X.rows(), 3);
-
-    double energy = 0;
-    for(const Hinge& h : m_hinges)
-    {
-      const Hinge_terms t(*this, h);
-      energy += t.energy();
-      const double kS = -1.5 * t.L * t.C / (t.S * t.S), kC = 1.5 * t.L / t.S, kL = 1.5 * t.C / t.S;
-      const Eigen::Vector3d d = t.n1 - t.n2;
-      point(m_coefficient, h.f[0]) += (kC / t.l1) * (d - d.dot(t.n1) * t.n1) + kS * t.n1;
-      point(m_coefficient, h.f[1]) -= (kC / t.l2) * (d - d.dot(t.n2) * t.n2) - kS * t.n2;
-      point(G, h.v[0]) -= 2 * kL * t.e;
-      point(G, h.v[1]) += 2 * kL * t.e;
-    }
-
-    for(std::size_t f = 0; f < nt; ++f)
-    {
-      const auto& v = m_mesh.triangles[f];
-      const Eigen::Vector3d a = point(m_coefficient, f);
-      for(int k = 0; k < 3; ++k)
-        point(G, v[k]) += a.cross(point(*m_points, v[(k + 2) % 3]) - point(*m_points, v[(k + 1) % 3]));
-    }
-    if(m_scale != 1)
-      G *= m_scale; // back from the scaled points: E(s X) = E(X)
+    const double energy = triangle_pass<true>();
+    G.resize(X.rows(), 3);
+    const Points& P = *m_points;
+    const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
+    parallel_for_blocks(m_mesh.number_of_vertices, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        Eigen::Vector3d g = Eigen::Vector3d::Zero();
+        for(Index c = m_corner_begin[i]; c < m_corner_begin[i + 1]; ++c)
+        {
+          const Index f = m_corners[c] / 3, k = m_corners[c] % 3;
+          const auto& v = m_mesh.triangles[f];
+          g += m_coefficient[f].cross(point(P, v[(k + 2) % 3]) - point(P, v[(k + 1) % 3]));
+        }
+        for(Index c = m_endpoint_begin[i]; c < m_endpoint_begin[i + 1]; ++c)
+        {
+          const Index h = m_endpoints[c] / 2;
+          const auto& v = m_mesh.hinges[h].v;
+          const Eigen::Vector3d e = point(P, v[1]) - point(P, v[0]);
+          if(m_endpoints[c] % 2 == 0)
+            g -= m_edge_factor[h] * e;
+          else
+            g += m_edge_factor[h] * e;
+        }
+        point(G, i) = scale == 1 ? g : Eigen::Vector3d(scale * g);
+      }
+    });
     return energy;
   }
 
 private:
+  static constexpr Index no_hinge = ~Index(0);
+
+  // A triangle's regularized doubled area l and unit normal n.
+  struct Frame
+  {
+    Eigen::Vector3d n;
+    double l;
+  };
+
+  // The hinges of each triangle (2 h + side, side 0 if the triangle is the hinge's first), and
+  // for each vertex its corners (3 f + k) and the hinges it ends (2 h + end), both in CSR form.
+  void build_adjacency(const std::vector<bool>& degenerate)
+  {
+    const std::size_t n = m_mesh.number_of_vertices;
+    m_triangle_hinges.assign(m_mesh.triangles.size(), {no_hinge, no_hinge, no_hinge});
+    m_corner_begin.assign(n + 1, 0);
+    m_endpoint_begin.assign(n + 1, 0);
+    for(const auto& t : m_mesh.triangles)
+      for(Index v : t)
+        ++m_corner_begin[v + 1];
+    m_number_of_hinges = 0;
+    for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
+    {
+      const Hinge& hinge = m_mesh.hinges[h];
+      if(degenerate[hinge.f[0]] || degenerate[hinge.f[1]])
+        continue;
+      ++m_number_of_hinges;
+      for(Index side = 0; side < 2; ++side)
+      {
+        auto& slots = m_triangle_hinges[hinge.f[side]];
+        *std::find(slots.begin(), slots.end(), no_hinge) = static_cast<Index>(2 * h + side);
+        ++m_endpoint_begin[hinge.v[side] + 1];
+      }
+    }
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      m_corner_begin[i + 1] += m_corner_begin[i];
+      m_endpoint_begin[i + 1] += m_endpoint_begin[i];
+    }
+    m_corners.resize(m_corner_begin[n]);
+    m_endpoints.resize(m_endpoint_begin[n]);
+    std::vector<Index> next(m_corner_begin.begin(), m_corner_begin.end() - 1);
+    for(std::size_t f = 0; f < m_mesh.triangles.size(); ++f)
+      for(Index k = 0; k < 3; ++k)
+        m_corners[next[m_mesh.triangles[f][k]]++] = static_cast<Index>(3 * f + k);
+    next.assign(m_endpoint_begin.begin(), m_endpoint_begin.end() - 1);
+    for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
+    {
+      const Hinge& hinge = m_mesh.hinges[h];
+      if(!degenerate[hinge.f[0]] && !degenerate[hinge.f[1]])
+        for(Index end = 0; end < 2; ++end)
+          m_endpoints[next[hinge.v[end]]++] = static_cast<Index>(2 * h + end);
+    }
+    m_coefficient.resize(m_mesh.triangles.size());
+    m_edge_factor.resize(m_mesh.hinges.size());
+  }
+
   // The scaled points s X, and the regularized doubled area l and normal n of every
   // triangle.
   void compute_triangles(const Points& X)
@@ -139,42 +202,73 @@ private:
       m_scaled.noalias() = m_scale * X;
       m_points = &m_scaled;
     }
-    const std::size_t nt = m_mesh.triangles.size();
-    m_normal.resize(static_cast<Eigen::Index>(nt), 3);
-    m_doubled_area.resize(nt);
-    for(std::size_t f = 0; f < nt; ++f)
-    {
-      const auto& v = m_mesh.triangles[f];
-      const Eigen::Vector3d p0 = point(*m_points, v[0]);
-      const Eigen::Vector3d N = (point(*m_points, v[1]) - p0).cross(point(*m_points, v[2]) - p0);
-      const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
-      m_doubled_area[f] = l;
-      point(m_normal, f) = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
-    }
+    const Points& P = *m_points;
+    m_frame.resize(m_mesh.triangles.size());
+    parallel_for_blocks(m_mesh.triangles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        const auto& v = m_mesh.triangles[f];
+        const Eigen::Vector3d p0 = point(P, v[0]);
+        const Eigen::Vector3d N = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0);
+        const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
+        m_frame[f].l = l;
+        m_frame[f].n = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
+      }
+    });
   }
 
-  struct Hinge_terms
+  // The energy, each hinge counted half by each of its triangles; with `gradient`, also each
+  // triangle's coefficient a and each hinge's edge factor 2 dE/dL.
+  template <bool gradient>
+  double triangle_pass()
   {
-    Eigen::Vector3d e, n1, n2;
-    double l1, l2, L, S, C;
-
-    Hinge_terms(const Bending_energy& E, const Hinge& h)
-      : e(point(*E.m_points, h.v[1]) - point(*E.m_points, h.v[0])), n1(point(E.m_normal, h.f[0])),
-        n2(point(E.m_normal, h.f[1])), l1(E.m_doubled_area[h.f[0]]), l2(E.m_doubled_area[h.f[1]]),
-        L(e.squaredNorm()), S(l1 + l2), C(0.5 * (n1 - n2).squaredNorm())
-    {}
-
-    double energy() const { return 1.5 * L * C / S; }
-  };
+    return parallel_sum(m_mesh.triangles.size(), m_partial, [&](std::size_t begin, std::size_t end) {
+      double energy = 0;
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        Eigen::Vector3d a = Eigen::Vector3d::Zero();
+        for(Index slot : m_triangle_hinges[f])
+        {
+          if(slot == no_hinge)
+            continue;
+          const Index h = slot / 2, side = slot % 2;
+          const Hinge& hinge = m_mesh.hinges[h];
+          const Frame& F1 = m_frame[hinge.f[0]];
+          const Frame& F2 = m_frame[hinge.f[1]];
+          const Eigen::Vector3d e = point(*m_points, hinge.v[1]) - point(*m_points, hinge.v[0]);
+          const Eigen::Vector3d d = F1.n - F2.n;
+          const double L = e.squaredNorm(), S = F1.l + F2.l, C = 0.5 * d.squaredNorm();
+          energy += 0.5 * (1.5 * L * C / S);
+          if(!gradient)
+            continue;
+          const double kS = -1.5 * L * C / (S * S), kC = 1.5 * L / S;
+          if(side == 0)
+          {
+            a += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
+            m_edge_factor[h] = 3 * C / S;
+          }
+          else
+            a -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+        }
+        if(gradient)
+          m_coefficient[f] = a;
+      }
+      return energy;
+    });
+  }
 
   const Hinge_mesh& m_mesh;
-  std::vector<Hinge> m_hinges; // those of m_mesh without a degenerate triangle
+  std::size_t m_number_of_hinges = 0; // those without a degenerate triangle
   double m_scale, m_delta = 0;
+  std::vector<std::array<Index, 3> > m_triangle_hinges;
+  std::vector<Index> m_corner_begin, m_corners, m_endpoint_begin, m_endpoints;
   // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and per
-  // triangle
+  // triangle and hinge
   const Points* m_points = nullptr;
-  Points m_scaled, m_normal, m_coefficient;
-  std::vector<double> m_doubled_area;
+  Points m_scaled;
+  std::vector<Frame> m_frame;
+  std::vector<Eigen::Vector3d> m_coefficient;
+  std::vector<double> m_edge_factor, m_partial;
 };
 
 } // namespace Constrained_fairing

@@ -127,6 +127,17 @@ std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& 
 }
 
 // X0 holds the points of the vertices, numbered as in vertex_index.
+// The solver numbers vertices and face corners with 32 bits.
+template <typename TriangleMesh>
+std::string size_error(const TriangleMesh& tmesh)
+{
+  if(static_cast<std::size_t>(num_vertices(tmesh)) <= (std::numeric_limits<Index>::max)() &&
+     static_cast<std::size_t>(num_faces(tmesh)) <= Hinge_mesh::max_faces)
+    return std::string();
+  return "the mesh is too large: at most " + std::to_string((std::numeric_limits<Index>::max)()) + " vertices and " +
+         std::to_string(Hinge_mesh::max_faces) + " faces";
+}
+
 inline std::string coordinates_error(const Points& X0)
 {
   for(Eigen::Index i = 0; i < X0.rows(); ++i)

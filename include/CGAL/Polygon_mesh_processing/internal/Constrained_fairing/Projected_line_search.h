@@ -1,17 +1,24 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The search for a good point on a projected ray r(t) = P(x + t v) (Section 4): from an
-// initial guess t0 (the previous iteration's step), double t while the descent condition
-// holds, or halve it until it holds. Doubling also stops as soon as the energy no longer
-// improves on the last accepted point, so that a longer step is never taken for a worse one.
+// The search for a good point on a projected ray r(t) = P(x + t v) (Section 4). The accepted
+// point goes to a buffer the caller owns (swapped in, so that no call allocates once the
+// buffers have their sizes).
+//  - search(): the paper's rule. From an initial guess t0 (the previous iteration's step),
+//    double t while the descent condition holds, or halve it until it holds. Doubling also
+//    stops as soon as the energy no longer improves on the last accepted point, so that a
+//    longer step is never taken for a worse one.
+//  - backtrack(): for quasi-Newton directions, whose natural step is 1: halve t from t0 until
+//    the condition holds, evaluating the gradient with the energy since the accepted point
+//    needs it next.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Feasible_set.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
+#include <cstddef>
 #include <utility>
 
 namespace CGAL {
@@ -26,64 +33,96 @@ public:
   // t0 * 2^-60 is far below any useful step: the condition cannot be met in double.
   static constexpr int max_halvings = 60;
 
-  // Searches r(t) from t0. `holds(energy, point)` is the descent condition. On success,
-  // returns true; `step()`, `energy()` and `point()` then describe the accepted point.
-  template <typename Condition>
-  bool run(const Points& x, const Points& v, double t0, const Feasible_set& omega,
-           Bending_energy& energy, const Condition& holds)
+  // What an accepted point is: written to `point`, with its energy and step.
+  struct Accepted
+  {
+    Points& point;
+    double energy = 0;
+    double step = 0;
+  };
+
+  // The paper's search from t0. `holds(energy, point)` is the descent condition. Returns
+  // true and fills `accepted` on success.
+  template <typename Bound, typename Condition>
+  bool search(const Points& x, const Points& v, double t0, const Bound& bound, Bending_energy& energy,
+              const Condition& holds, Accepted& accepted)
   {
     double t = t0;
-    if(try_step(x, v, t, omega, energy, holds))
+    if(try_step(x, v, t, bound, energy, holds, nullptr))
     {
-      accept(t);
+      accept(t, accepted);
       for(int k = 0; k < max_doublings; ++k)
       {
         t *= 2;
-        if(!try_step(x, v, t, omega, energy, holds) || !(m_trial_energy < m_energy))
+        if(!try_step(x, v, t, bound, energy, holds, nullptr) || !(m_trial_energy < accepted.energy))
           break;
-        accept(t);
+        accept(t, accepted);
       }
       return true;
     }
+    return halve(x, v, t, bound, energy, holds, nullptr, accepted);
+  }
+
+  // Halving from t0 only, with the gradient at the accepted point written to G.
+  template <typename Bound, typename Condition>
+  bool backtrack(const Points& x, const Points& v, double t0, const Bound& bound, Bending_energy& energy,
+                 const Condition& holds, Accepted& accepted, Points& G)
+  {
+    if(try_step(x, v, t0, bound, energy, holds, &m_trial_gradient))
+    {
+      accept(t0, accepted);
+      std::swap(G, m_trial_gradient);
+      return true;
+    }
+    if(!halve(x, v, t0, bound, energy, holds, &m_trial_gradient, accepted))
+      return false;
+    std::swap(G, m_trial_gradient);
+    return true;
+  }
+
+  // Energy evaluations so far, with or without the gradient.
+  std::size_t evaluations() const { return m_evaluations; }
+
+private:
+  template <typename Bound, typename Condition>
+  bool halve(const Points& x, const Points& v, double t, const Bound& bound, Bending_energy& energy,
+             const Condition& holds, Points* gradient, Accepted& accepted)
+  {
     for(int k = 0; k < max_halvings; ++k)
     {
       t /= 2;
-      if(try_step(x, v, t, omega, energy, holds))
+      if(try_step(x, v, t, bound, energy, holds, gradient))
       {
-        accept(t);
+        accept(t, accepted);
         return true;
       }
     }
     return false;
   }
 
-  double step() const { return m_step; }
-  double energy() const { return m_energy; }
-  const Points& point() const { return m_point; }
-  Points& point() { return m_point; }
-
-private:
-  template <typename Condition>
-  bool try_step(const Points& x, const Points& v, double t, const Feasible_set& omega,
-                Bending_energy& energy, const Condition& holds)
+  template <typename Bound, typename Condition>
+  bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Bending_energy& energy,
+                const Condition& holds, Points* gradient)
   {
     m_trial.noalias() = x + t * v;
     if(!m_trial.allFinite()) // a step so long that it overflows is no candidate
       return false;
-    omega.project(m_trial);
-    m_trial_energy = energy.value(m_trial);
+    bound.project(m_trial);
+    ++m_evaluations;
+    m_trial_energy = gradient ? energy.value_and_gradient(m_trial, *gradient) : energy.value(m_trial);
     return holds(m_trial_energy, m_trial);
   }
 
-  void accept(double t)
+  void accept(double t, Accepted& accepted)
   {
-    std::swap(m_point, m_trial);
-    m_energy = m_trial_energy;
-    m_step = t;
+    std::swap(accepted.point, m_trial);
+    accepted.energy = m_trial_energy;
+    accepted.step = t;
   }
 
-  Points m_trial, m_point;
-  double m_trial_energy = 0, m_energy = 0, m_step = 0;
+  Points m_trial, m_trial_gradient;
+  double m_trial_energy = 0;
+  std::size_t m_evaluations = 0;
 };
 
 } // namespace Constrained_fairing

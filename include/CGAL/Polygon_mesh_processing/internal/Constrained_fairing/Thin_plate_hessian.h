@@ -11,6 +11,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_THIN_PLATE_HESSIAN_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>

@@ -1,0 +1,73 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Loops over the elements of the mesh, in parallel with TBB when CGAL is linked with it
+// (CGAL_LINKED_WITH_TBB), sequentially otherwise. The range is cut into blocks of a fixed size
+// that does not depend on the number of threads, and every output is written by one block
+// only; sums are taken per block and then added in block order. So results are bit-identical
+// run to run and for any number of threads.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PARALLEL_FOR_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PARALLEL_FOR_H
+
+#include <cstddef>
+#include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// Elements per block: large enough to hide the scheduling, small enough to balance two to a
+// few dozen threads on meshes of 10^5 elements and more.
+constexpr std::size_t parallel_block_size = 4096;
+
+inline std::size_t number_of_blocks(std::size_t n) { return (n + parallel_block_size - 1) / parallel_block_size; }
+
+// Calls f(begin, end, block) for the blocks [begin, end) of [0, n).
+template <typename F>
+void parallel_for_blocks(std::size_t n, const F& f)
+{
+  const std::size_t blocks = number_of_blocks(n);
+  const auto run = [&](std::size_t b) {
+    const std::size_t begin = b * parallel_block_size;
+    f(begin, (begin + parallel_block_size < n) ? begin + parallel_block_size : n, b);
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(blocks > 1)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t b = r.begin(); b != r.end(); ++b)
+        run(b);
+    });
+    return;
+  }
+#endif
+  for(std::size_t b = 0; b < blocks; ++b)
+    run(b);
+}
+
+// The sum over [0, n) of f(begin, end), each a partial sum over a block, added in block order.
+// `partial` is the caller's buffer, so that no call allocates once it has its size.
+template <typename F>
+double parallel_sum(std::size_t n, std::vector<double>& partial, const F& f)
+{
+  partial.resize(number_of_blocks(n));
+  parallel_for_blocks(n, [&](std::size_t begin, std::size_t end, std::size_t b) { partial[b] = f(begin, end); });
+  double sum = 0;
+  for(double s : partial)
+    sum += s;
+  return sum;
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PARALLEL_FOR_H

@@ -1,0 +1,82 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Vertex coordinates as the solver sees them: an n x 3 matrix, one row per vertex, the paper's
+// point x in R^{3n}, and the few operations on it that every part of the solver uses.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POINTS_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POINTS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+using Points = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// Vertex and face indices: 32 bits, as in CGAL::Surface_mesh, halve the memory of the
+// connectivity arrays on large scans.
+using Index = std::uint32_t;
+
+inline Eigen::Map<const Eigen::Vector3d> point(const Points& X, std::size_t i)
+{
+  return Eigen::Map<const Eigen::Vector3d>(X.data() + 3 * i);
+}
+
+inline Eigen::Map<Eigen::Vector3d> point(Points& X, std::size_t i)
+{
+  return Eigen::Map<Eigen::Vector3d>(X.data() + 3 * i);
+}
+
+// <A, B> over all coordinates
+inline double dot(const Points& A, const Points& B) { return A.cwiseProduct(B).sum(); }
+
+// The same in parallel over blocks of vertices, `partial` the caller's buffer.
+inline double dot(const Points& A, const Points& B, std::vector<double>& partial)
+{
+  return parallel_sum(static_cast<std::size_t>(A.rows()), partial, [&](std::size_t begin, std::size_t end) {
+    const auto n = static_cast<Eigen::Index>(end - begin), b = static_cast<Eigen::Index>(begin);
+    return A.middleRows(b, n).cwiseProduct(B.middleRows(b, n)).sum();
+  });
+}
+
+// Y += a X in parallel over blocks of vertices.
+inline void add_scaled(Points& Y, double a, const Points& X)
+{
+  parallel_for_blocks(static_cast<std::size_t>(Y.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+    const auto n = static_cast<Eigen::Index>(end - begin), b = static_cast<Eigen::Index>(begin);
+    Y.middleRows(b, n) += a * X.middleRows(b, n);
+  });
+}
+
+// The scale, a power of two, at which the energy and its Hessian are evaluated: 1 when the
+// largest coordinate of X is within [2^-100, 2^100], where squared areas of any mesh that is
+// not a single point fit in double; otherwise the one that brings it into [1/2, 1), for meshes
+// in kilometres or nanometres of absurd units. A power of two scales every intermediate
+// result exactly.
+inline double unit_scale(const Points& X)
+{
+  const double largest = X.size() > 0 ? X.cwiseAbs().maxCoeff() : 0;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  if(!(largest > 0) || (exponent > -100 && exponent <= 100))
+    return 1;
+  return std::ldexp(1., (std::max)(-1000, (std::min)(1000, -exponent)));
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POINTS_H

@@ -1,0 +1,188 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default solver: a projected limited-memory BFGS method on the binding constraints.
+//
+// Why not the paper's Newton method: its model of the Hessian, S M^-1 S on the input mesh,
+// treats every direction of a vertex alike, while the bending energy is stiff along the
+// surface normal and soft along the surface, where vertices slide to even out their triangles;
+// once the noise is gone, that sliding is most of the remaining decrease, and the factorized
+// model steps across it slowly. Quasi-Newton pairs learn that curvature from the gradients
+// themselves, with no factorization, and cost one energy and gradient evaluation per
+// iteration in the common case where the step 1 is accepted.
+//
+// Each iteration:
+//  1. the active set: the vertices on the boundary of their bound that -g pushes outwards;
+//  2. the direction d = -H g restricted to that face, H the L-BFGS inverse Hessian of the last
+//     `memory` steps (the restricted -g when H gives no descent direction, or has no pairs);
+//  3. backtracking along P(x + t d) from t = 1 (from the last accepted gradient step when H
+//     has no pairs) until E(y) < E(x) + lambda <g, y - x>.
+// If that search fails, the pairs are dropped and the iteration is redone along the
+// projected gradient; if that fails too, x is stationary up to rounding. Every accepted point
+// lies in the feasible set and has a lower energy than the one before.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_line_search.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+template <typename Bound>
+class Projected_lbfgs
+{
+public:
+  // The number of (step, gradient change) pairs kept.
+  static constexpr std::size_t memory = 5;
+  // lambda of the sufficient decrease condition
+  static constexpr double sufficient_decrease = 1e-4;
+
+  Projected_lbfgs(const Bound& bound, Bending_energy& energy) : m_bound(bound), m_energy(energy) {}
+
+  // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
+  // cancels.
+  template <typename Callback>
+  Solver_report run(Points& X, const Solver_options& options, const Callback& callback)
+  {
+    Solver_report report;
+    double E = m_energy.value_and_gradient(X, m_G);
+    report.initial_energy = E;
+    Energy_history history(options);
+    history.push(E);
+    // The first gradient step moves the vertex of largest gradient by epsilon.
+    const double largest_gradient = m_G.rowwise().norm().maxCoeff();
+    double t_gradient = largest_gradient > 0 ? m_bound.epsilon() / largest_gradient : 0;
+    m_pairs = 0;
+
+    while(report.iterations < options.max_iterations)
+    {
+      if(!(E > 0) || !(t_gradient > 0))
+      {
+        report.status = Constrained_fairing_status::CONVERGED;
+        break;
+      }
+      m_active.compute(m_bound, X, m_G);
+      m_D.noalias() = -m_G;
+      m_active.restrict(m_D);
+      if(m_pairs > 0)
+      {
+        apply_inverse_hessian(m_D);
+        m_active.restrict(m_D);
+        if(!(dot(m_D, m_G, m_partial) < 0))
+          restart();
+      }
+
+      const auto sufficient = [&](double e, const Points& Y) {
+        return e < E + sufficient_decrease * (m_G.cwiseProduct(Y - X)).sum();
+      };
+      Projected_line_search::Accepted accepted{m_X};
+      if(!m_search.backtrack(X, m_D, m_pairs > 0 ? 1. : t_gradient, m_bound, m_energy, sufficient, accepted, m_G_next))
+      {
+        if(m_pairs > 0)
+        {
+          m_pairs = 0; // the pairs misled: redo the iteration along the projected gradient
+          continue;
+        }
+        report.status = Constrained_fairing_status::CONVERGED; // stationary up to rounding
+        break;
+      }
+      if(m_pairs == 0)
+        t_gradient = accepted.step;
+      add_pair(X, m_G);
+      X.swap(m_X);
+      m_G.swap(m_G_next);
+      E = accepted.energy;
+      history.push(E);
+      ++report.iterations;
+
+      if(!callback(report.iterations, E))
+      {
+        report.status = Constrained_fairing_status::CANCELLED;
+        break;
+      }
+      if(history.has_stalled())
+      {
+        report.status = Constrained_fairing_status::CONVERGED;
+        break;
+      }
+    }
+    report.final_energy = E;
+    report.energy_evaluations = m_search.evaluations() + 1;
+    return report;
+  }
+
+private:
+  void restart()
+  {
+    m_pairs = 0;
+    m_D.noalias() = -m_G;
+    m_active.restrict(m_D);
+  }
+
+  // Stores s = x_next - x and y = g_next - g if their curvature s.y is positive (else the
+  // pair would make H indefinite and is skipped).
+  void add_pair(const Points& X, const Points& G)
+  {
+    const std::size_t slot = (m_newest + 1) % memory;
+    m_s[slot].noalias() = m_X - X;
+    m_y[slot].noalias() = m_G_next - G;
+    const double sy = dot(m_s[slot], m_y[slot], m_partial);
+    if(!(sy > 0))
+    {
+      if(m_pairs == memory) // the slot held the oldest pair
+        --m_pairs;
+      return;
+    }
+    m_rho[slot] = 1 / sy;
+    m_newest = slot;
+    if(m_pairs < memory)
+      ++m_pairs;
+  }
+
+  // D = H D by the two-loop recursion, H0 = (s.y / y.y) I from the newest pair.
+  void apply_inverse_hessian(Points& D)
+  {
+    for(std::size_t k = 0; k < m_pairs; ++k) // newest to oldest
+    {
+      const std::size_t j = (m_newest + memory - k) % memory;
+      m_alpha[j] = m_rho[j] * dot(m_s[j], D, m_partial);
+      add_scaled(D, -m_alpha[j], m_y[j]);
+    }
+    const double yy = dot(m_y[m_newest], m_y[m_newest], m_partial);
+    D *= 1 / (m_rho[m_newest] * yy);
+    for(std::size_t k = m_pairs; k-- > 0;) // oldest to newest
+    {
+      const std::size_t j = (m_newest + memory - k) % memory;
+      const double beta = m_rho[j] * dot(m_y[j], D, m_partial);
+      add_scaled(D, m_alpha[j] - beta, m_s[j]);
+    }
+  }
+
+  const Bound& m_bound;
+  Bending_energy& m_energy;
+  Active_set<Bound> m_active;
+  Projected_line_search m_search;
+  Points m_G, m_D, m_X, m_G_next; // gradient, direction, next point and its gradient
+  std::array<Points, memory> m_s, m_y;
+  std::array<double, memory> m_rho{}, m_alpha{};
+  std::size_t m_pairs = 0, m_newest = 0;
+  std::vector<double> m_partial;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H

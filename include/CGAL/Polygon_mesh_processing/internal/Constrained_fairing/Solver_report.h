@@ -1,0 +1,77 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What a solver is asked (its options) and what it answers (its report), which the public
+// function turns into the public result once.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SOLVER_REPORT_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SOLVER_REPORT_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+struct Solver_options
+{
+  std::size_t max_iterations = 200;
+  // Stop when the energy decreased by less than `threshold` relatively per iteration, on
+  // average over the last `window` iterations.
+  double threshold = 1e-3;
+  std::size_t window = 3;
+  // Newton method: the largest number of conjugate gradient iterations per step.
+  std::size_t cg_iterations = 1;
+  // Projected gradient method: Cauchy steps only.
+  bool cauchy_steps_only = false;
+};
+
+struct Solver_report
+{
+  Constrained_fairing_status status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+  std::string message;
+  std::size_t iterations = 0;
+  std::size_t cg_iterations = 0;
+  std::size_t energy_evaluations = 0;
+  double initial_energy = 0;
+  double final_energy = 0;
+};
+
+// The stopping rule shared by the solvers: the energies of the iterations so far, and
+// whether the last `window` of them decreased by less than `threshold` relatively on average.
+class Energy_history
+{
+public:
+  explicit Energy_history(const Solver_options& options) : m_window(options.window), m_threshold(options.threshold)
+  {
+    m_energies.reserve(options.max_iterations + 1);
+  }
+
+  void push(double energy) { m_energies.push_back(energy); }
+
+  bool has_stalled() const
+  {
+    if(m_energies.size() <= m_window)
+      return false;
+    const double before = m_energies[m_energies.size() - 1 - m_window];
+    return before - m_energies.back() <= double(m_window) * m_threshold * before;
+  }
+
+private:
+  std::size_t m_window;
+  double m_threshold;
+  std::vector<double> m_energies;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SOLVER_REPORT_H
