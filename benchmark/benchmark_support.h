@@ -9,10 +9,13 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -46,6 +49,49 @@ inline void add_noise(Mesh& mesh, double radius, unsigned int seed)
   }
 }
 
+// The large test cases: `base` Loop subdivided `levels` times (CGAL's Subdivision_method_3),
+// then seeded uniform-ball noise of radius 0.25 h, h the subdivided mesh's mean edge length.
+// Returns h.
+inline double make_noisy_case(const Mesh& base, unsigned int levels, Mesh& noisy)
+{
+  noisy = base;
+  CGAL::Subdivision_method_3::Loop_subdivision(noisy, CGAL::parameters::number_of_iterations(levels));
+  const double h = mean_edge_length(noisy);
+  add_noise(noisy, 0.25 * h, 1);
+  return h;
+}
+
+// The mesh the speed benchmarks start from: the Stanford bunny of CGAL's sample data (75,408
+// triangles) from the project's sibling folder shared/data when it is there, else the
+// bundled elephant. Says which.
+inline bool read_base_mesh(const std::string& given, Mesh& base, std::string& name)
+{
+  name = given;
+  if(name.empty())
+  {
+    name = CONSTRAINED_FAIRING_SHARED_DATA "/bunny00.off";
+    if(!std::ifstream(name))
+      name = CONSTRAINED_FAIRING_DATA_DIR "/elephant.off";
+  }
+  return CGAL::IO::read_polygon_mesh(name, base);
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The median of the values that `runs` calls of f return.
+template <typename F>
+double median_of(int runs, F&& f)
+{
+  std::vector<double> values;
+  for(int r = 0; r < runs; ++r)
+    values.push_back(f());
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 // The median wall-clock time of `runs` calls of f.
 template <typename F>
 double median_seconds(int runs, F&& f)
@@ -61,23 +107,52 @@ double median_seconds(int runs, F&& f)
   return t[t.size() / 2];
 }
 
-// The command line: positional arguments, and `--runs N` (default 3) for median timing.
+// The command line: positional arguments, `--runs N` (default 3) for median timing, and
+// `--name VALUE` options.
 struct Arguments
 {
   std::vector<std::string> positional;
+  std::vector<std::pair<std::string, std::string> > options;
   int runs = 3;
 
   Arguments(int argc, char* argv[])
   {
     for(int i = 1; i < argc; ++i)
     {
-      if(std::string(argv[i]) == "--runs" && i + 1 < argc)
+      const std::string a = argv[i];
+      if(a == "--runs" && i + 1 < argc)
         runs = std::stoi(argv[++i]);
+      else if(a.rfind("--", 0) == 0 && i + 1 < argc)
+      {
+        options.emplace_back(a.substr(2), argv[i + 1]);
+        ++i;
+      }
       else
-        positional.push_back(argv[i]);
+        positional.push_back(a);
     }
   }
+
+  std::string option(const std::string& name, const std::string& fallback) const
+  {
+    for(const auto& o : options)
+      if(o.first == name)
+        return o.second;
+    return fallback;
+  }
 };
+
+// Peak resident memory of the process in bytes, and its reset (Linux: /proc/self).
+inline double peak_memory_bytes()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.rfind("VmHWM:", 0) == 0)
+      return 1024 * std::stod(line.substr(6));
+  return 0;
+}
+
+inline void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
 } // namespace benchmark
 

@@ -1,28 +1,36 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// How the default call scales with the mesh size:
+// How the default call scales, one mesh size per process so that the peak memory is that of
+// one call:
 //
-//   fairing_scaling [IN] [LEVELS] [--runs N]
+//   fairing_scaling [MESH] [--level L] [--runs N]
 //
-// IN (default: the bundled elephant) is Loop subdivided 0, 1, ..., LEVELS times (default 3);
-// each mesh gets noise of radius 0.25 h (h its mean edge length, seeded) and is faired with
-// epsilon = 0.25 h. For each size: iterations, median time over N runs (default 3), time per
-// iteration, peak resident memory so far, and, when CHOLMOD is available, the time with a
-// CHOLMOD supernodal solver as a ratio to the default solver's, measured in the same process.
+// MESH (default: the shared bunny, else the bundled elephant; see benchmark_support.h) is Loop
+// subdivided L times (default 1) and given seeded noise of 0.25 h; epsilon = 0.25 h. Reports,
+// all measured in this process, medians of N runs (default 3):
+//  - the default call as a user makes it: time, iterations, energy evaluations, energy;
+//  - the peak resident memory of the whole process during the first call (the mesh included),
+//    in bytes per triangle;
+//  - where the time goes: setup (input checks, connectivity, the energy's set-up and first
+//    evaluation: the call with number_of_iterations(0)), energy and gradient evaluations
+//    (their count times the time of one), and the rest (directions, active sets,
+//    projections);
+//  - two yardsticks on the same mesh: CGAL's smooth_shape (10 iterations, time 0.03 h^2) and
+//    one CHOLMOD supernodal factorization of the cotan stiffness matrix S (when CHOLMOD is
+//    found), with the default call's time as a ratio of each.
+// run_scaling.sh runs it over sizes and fits the growth exponent.
 
 #include "benchmark_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
-
-#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Thin_plate_hessian.h>
+#include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
-
-#include <sys/resource.h>
 
 #include <cstdlib>
 #include <iomanip>
@@ -31,64 +39,98 @@
 #include <vector>
 
 using benchmark::Mesh;
+using benchmark::Point;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-double peak_memory_mib()
-{
-  rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024; // KiB on Linux
-}
+namespace CF = PMP::internal::Constrained_fairing;
 
 int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
-  const std::vector<std::string>& args = arguments.positional;
   const int runs = arguments.runs;
-  const std::string in = args.size() > 0 ? args[0] : CONSTRAINED_FAIRING_DATA_DIR "/elephant.off";
-  const unsigned int levels = args.size() > 1 ? static_cast<unsigned int>(std::stoul(args[1])) : 3u;
-
   Mesh base;
-  if(!CGAL::IO::read_polygon_mesh(in, base))
+  std::string name;
+  if(!benchmark::read_base_mesh(arguments.positional.empty() ? "" : arguments.positional[0], base, name))
   {
-    std::cerr << "error: cannot read " << in << std::endl;
+    std::cerr << "error: cannot read " << name << std::endl;
     return EXIT_FAILURE;
   }
-  std::cout << in << ", Loop subdivided 0.." << levels << " times, noise and epsilon 0.25 h, median of " << runs
-            << " runs\n\n"
-            << std::setw(10) << "vertices" << std::setw(6) << "it" << std::setw(10) << "s" << std::setw(12) << "ms/it"
-            << std::setw(12) << "peak MiB" << std::setw(10) << "energy"
-#ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-            << std::setw(16) << "CHOLMOD/default"
-#endif
-            << "\n";
+  const auto level = static_cast<unsigned int>(std::stoul(arguments.option("level", "1")));
+  Mesh noisy;
+  const double h = benchmark::make_noisy_case(base, level, noisy);
+  base.clear();
+  const double eps = 0.25 * h;
+  const double triangles = double(num_faces(noisy));
+  std::vector<Point> input;
+  for(auto v : vertices(noisy))
+    input.push_back(noisy.point(v));
+  auto restore = [&](Mesh& m) {
+    for(auto v : vertices(m))
+      m.point(v) = input[v.idx()];
+  };
 
-  for(unsigned int level = 0; level <= levels; ++level)
+  std::cout << name << " Loop subdivided " << level << " times: " << num_vertices(noisy) << " vertices, "
+            << num_faces(noisy) << " triangles; noise and epsilon 0.25 h = " << eps << "; medians of " << runs
+            << " runs\n";
+
+  // The first call, on the mesh itself: the peak memory of the process during a call.
+  benchmark::reset_peak_memory();
+  PMP::Constrained_fairing_result r = PMP::constrained_fairing(noisy, eps);
+  const double peak = benchmark::peak_memory_bytes();
+  restore(noisy);
+
+  const double seconds = benchmark::median_seconds(runs, [&] {
+    r = PMP::constrained_fairing(noisy, eps);
+    restore(noisy);
+  });
+  const double setup = benchmark::median_seconds(runs, [&] {
+    PMP::constrained_fairing(noisy, eps, CGAL::parameters::number_of_iterations(0));
+  });
+
+  // One evaluation of the energy, its gradient and the stiffness, as the solver makes it.
+  auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), noisy);
+  std::size_t n = 0;
+  for(auto v : vertices(noisy))
+    put(vertex_index, v, n++);
+  CF::Points X0(static_cast<Eigen::Index>(n), 3), G;
+  for(auto v : vertices(noisy))
+    X0.row(static_cast<Eigen::Index>(get(vertex_index, v))) << input[v.idx()].x(), input[v.idx()].y(),
+      input[v.idx()].z();
+  Eigen::VectorXd K;
+  double evaluation = 0, factorization = 0;
   {
-    Mesh clean = base;
-    CGAL::Subdivision_method_3::Loop_subdivision(clean, CGAL::parameters::number_of_iterations(level));
-    const double eps = 0.25 * benchmark::mean_edge_length(clean);
-    Mesh noisy = clean;
-    benchmark::add_noise(noisy, eps, 1);
-
-    PMP::Constrained_fairing_result r;
-    const double seconds = benchmark::median_seconds(runs, [&] {
-      Mesh m = noisy;
-      r = PMP::constrained_fairing(m, eps);
-    });
-    std::cout << std::setw(10) << num_vertices(noisy) << std::setw(6) << r.number_of_iterations << std::setw(10)
-              << std::setprecision(3) << seconds << std::setw(12) << 1000 * seconds / double(r.number_of_iterations)
-              << std::setw(12) << std::setprecision(4) << peak_memory_mib() << std::setw(10) << r.final_energy;
+    const CF::Hinge_mesh mesh(noisy, vertex_index);
+    CF::Bending_energy energy(mesh, X0);
+    evaluation = benchmark::median_seconds(std::max(runs, 5), [&] { energy.value_and_gradient(X0, G, &K); });
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
     using Cholmod =
       CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
-    const double cholmod_seconds = benchmark::median_seconds(runs, [&] {
-      Mesh m = noisy;
-      PMP::constrained_fairing(m, eps, CGAL::parameters::sparse_linear_solver(Cholmod()));
+    factorization = benchmark::median_of(runs, [&] {
+      CF::Thin_plate_hessian<Cholmod> S(mesh, X0, Cholmod());
+      const auto start = std::chrono::steady_clock::now();
+      S.factorize();
+      return benchmark::seconds_since(start);
     });
-    std::cout << std::setw(16) << std::setprecision(3) << cholmod_seconds / seconds;
 #endif
-    std::cout << std::endl;
   }
+  const double smoothing = benchmark::median_seconds(runs, [&] {
+    PMP::smooth_shape(noisy, 0.03 * h * h, CGAL::parameters::number_of_iterations(10));
+    restore(noisy);
+  });
+
+  const double evaluations = double(r.number_of_energy_evaluations) * evaluation;
+  std::cout << std::setprecision(4) << "default call:      " << seconds << " s, " << r.number_of_iterations
+            << " iterations, " << r.number_of_energy_evaluations << " evaluations, energy " << r.initial_energy
+            << " -> " << r.final_energy << "\n"
+            << "peak memory:       " << peak / (1 << 20) << " MiB, " << peak / triangles << " bytes per triangle\n"
+            << "breakdown:         setup " << setup << " s, energy+gradient " << evaluations << " s ("
+            << r.number_of_energy_evaluations << " x " << evaluation << " s), other " << seconds - setup - evaluations
+            << " s; factorization and linear solves: none\n"
+            << "smooth_shape:      " << smoothing << " s (10 iterations): the default call takes "
+            << seconds / smoothing << " of it\n";
+  if(factorization > 0)
+    std::cout << "CHOLMOD factor S:  " << factorization << " s: the default call takes " << seconds / factorization
+              << " times it\n";
+  std::cout << "row: " << num_faces(noisy) << " " << seconds << " " << peak / triangles << " " << r.number_of_iterations
+            << " " << smoothing << " " << factorization << std::endl;
   return EXIT_SUCCESS;
 }

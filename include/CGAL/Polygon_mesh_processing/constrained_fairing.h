@@ -52,15 +52,15 @@ Solver_report fair(const Hinge_mesh& mesh, const Bound& bound, Bending_energy& e
 }
 
 // The stopping rule of each method when the user sets none: the quasi-Newton method's energy
-// decreases in small, uneven steps long after the noise is gone, so it is judged over more
-// iterations and against a smaller threshold.
+// keeps decreasing in small, uneven steps, with plateaus of tens of iterations, long after the
+// noise is gone, so it is judged over 50 iterations and against a smaller threshold.
 inline Solver_options default_options(Constrained_fairing_method method)
 {
   Solver_options options;
   if(method == Constrained_fairing_method::QUASI_NEWTON)
   {
     options.threshold = 1e-4;
-    options.window = 10;
+    options.window = 50;
     options.max_iterations = 1000;
   }
   options.cauchy_steps_only = method == Constrained_fairing_method::PROJECTED_GRADIENT;

@@ -100,22 +100,35 @@ public:
   // triangles' dN: each hinge adds a vector coefficient a to each of its two triangles, with
   // dE = sum <a, dN>. Moving vertex k of a triangle by d changes N by d x (p_(k+1) - p_(k+2)),
   // so the triangle then adds a x (p_(k+2) - p_(k+1)) to the gradient at that vertex.
-  double value_and_gradient(const Points& X, Points& G)
+  //
+  // With `stiffness`, also writes each vertex's stiffness along the surface normal: the
+  // diagonal of the Gauss-Newton model of the Hessian, which drops the second derivatives of
+  // the normals. Written as E = sum |r_h|^2 with r_h = w_h (n1 - n2), w_h^2 = 3 L / (4 S), and
+  // |dn/dp| = |p_(k+2) - p_(k+1)| / l for vertex k of a triangle (one over its height), a vertex
+  // gets sum over its corners of |p_(k+2) - p_(k+1)|^2 / l^2 times the triangle's sum of w_h^2.
+  // It ranges over orders of magnitude on scans (small and needle triangles are stiff), which is
+  // what the quasi-Newton method scales its steps by.
+  double value_and_gradient(const Points& X, Points& G, Eigen::VectorXd* stiffness = nullptr)
   {
     compute_triangles(X);
     const double energy = triangle_pass<true>();
     G.resize(X.rows(), 3);
+    if(stiffness)
+      stiffness->resize(X.rows());
     const Points& P = *m_points;
     const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
     parallel_for_blocks(m_mesh.number_of_vertices, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)
       {
         Eigen::Vector3d g = Eigen::Vector3d::Zero();
+        double k_normal = 0;
         for(Index c = m_corner_begin[i]; c < m_corner_begin[i + 1]; ++c)
         {
           const Index f = m_corners[c] / 3, k = m_corners[c] % 3;
           const auto& v = m_mesh.triangles[f];
-          g += m_coefficient[f].cross(point(P, v[(k + 2) % 3]) - point(P, v[(k + 1) % 3]));
+          const Eigen::Vector3d opposite = point(P, v[(k + 2) % 3]) - point(P, v[(k + 1) % 3]);
+          g += m_coefficient[f].cross(opposite);
+          k_normal += m_hinge_weight[f] * opposite.squaredNorm() / (m_frame[f].l * m_frame[f].l);
         }
         for(Index c = m_endpoint_begin[i]; c < m_endpoint_begin[i + 1]; ++c)
         {
@@ -128,6 +141,8 @@ public:
             g += m_edge_factor[h] * e;
         }
         point(G, i) = scale == 1 ? g : Eigen::Vector3d(scale * g);
+        if(stiffness)
+          (*stiffness)[static_cast<Eigen::Index>(i)] = scale * scale * k_normal;
       }
     });
     return energy;
@@ -188,6 +203,7 @@ private:
           m_endpoints[next[hinge.v[end]]++] = static_cast<Index>(2 * h + end);
     }
     m_coefficient.resize(m_mesh.triangles.size());
+    m_hinge_weight.resize(m_mesh.triangles.size());
     m_edge_factor.resize(m_mesh.hinges.size());
   }
 
@@ -218,7 +234,7 @@ private:
   }
 
   // The energy, each hinge counted half by each of its triangles; with `gradient`, also each
-  // triangle's coefficient a and each hinge's edge factor 2 dE/dL.
+  // triangle's coefficient a and sum of w_h^2, and each hinge's edge factor 2 dE/dL.
   template <bool gradient>
   double triangle_pass()
   {
@@ -227,6 +243,7 @@ private:
       for(std::size_t f = begin; f < end; ++f)
       {
         Eigen::Vector3d a = Eigen::Vector3d::Zero();
+        double weight = 0;
         for(Index slot : m_triangle_hinges[f])
         {
           if(slot == no_hinge)
@@ -242,6 +259,7 @@ private:
           if(!gradient)
             continue;
           const double kS = -1.5 * L * C / (S * S), kC = 1.5 * L / S;
+          weight += 0.75 * L / S;
           if(side == 0)
           {
             a += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
@@ -251,7 +269,10 @@ private:
             a -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
         }
         if(gradient)
+        {
           m_coefficient[f] = a;
+          m_hinge_weight[f] = weight;
+        }
       }
       return energy;
     });
@@ -268,7 +289,7 @@ private:
   Points m_scaled;
   std::vector<Frame> m_frame;
   std::vector<Eigen::Vector3d> m_coefficient;
-  std::vector<double> m_edge_factor, m_partial;
+  std::vector<double> m_hinge_weight, m_edge_factor, m_partial;
 };
 
 } // namespace Constrained_fairing

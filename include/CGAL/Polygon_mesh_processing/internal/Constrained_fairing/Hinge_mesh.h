@@ -25,11 +25,12 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// An interior edge (v[0], v[1]) with its two triangles (v[0], v[1], v[2]) and (v[1], v[0], v[3]),
-// both oriented as in the mesh; f[0] and f[1] are their indices in Hinge_mesh::triangles.
+// An interior edge from v[0] to v[1] with its two triangles, both oriented as in the mesh:
+// f[0] runs along the edge from v[0] to v[1], f[1] from v[1] to v[0] (their indices in
+// Hinge_mesh::triangles).
 struct Hinge
 {
-  std::array<Index, 4> v;
+  std::array<Index, 2> v;
   std::array<Index, 2> f;
 };
 
@@ -84,9 +85,8 @@ struct Hinge_mesh
       if(is_border_edge(h, tmesh))
         continue;
       const Index a = id(source(h, tmesh)), b = id(target(h, tmesh));
-      const Index c = id(target(next(h, tmesh), tmesh)), d = id(target(next(opposite(h, tmesh), tmesh), tmesh));
       const Index f = get(face_index, face(h, tmesh)), g = get(face_index, face(opposite(h, tmesh), tmesh));
-      hinges.push_back(a < b ? Hinge{{a, b, c, d}, {f, g}} : Hinge{{b, a, d, c}, {g, f}});
+      hinges.push_back(a < b ? Hinge{{a, b}, {f, g}} : Hinge{{b, a}, {g, f}});
     }
     std::sort(hinges.begin(), hinges.end(), [](const Hinge& x, const Hinge& y) { return x.v < y.v; });
   }

@@ -38,24 +38,30 @@ inline Eigen::Map<Eigen::Vector3d> point(Points& X, std::size_t i)
   return Eigen::Map<Eigen::Vector3d>(X.data() + 3 * i);
 }
 
+// Vertex displacements stored in single precision, where half the memory matters more than
+// the digits (the quasi-Newton method's history).
+using Float_points = Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
 // <A, B> over all coordinates
 inline double dot(const Points& A, const Points& B) { return A.cwiseProduct(B).sum(); }
 
-// The same in parallel over blocks of vertices, `partial` the caller's buffer.
-inline double dot(const Points& A, const Points& B, std::vector<double>& partial)
+// The same in parallel over blocks of vertices, in double, `partial` the caller's buffer.
+template <typename A, typename B>
+double dot(const A& a, const B& b, std::vector<double>& partial)
 {
-  return parallel_sum(static_cast<std::size_t>(A.rows()), partial, [&](std::size_t begin, std::size_t end) {
-    const auto n = static_cast<Eigen::Index>(end - begin), b = static_cast<Eigen::Index>(begin);
-    return A.middleRows(b, n).cwiseProduct(B.middleRows(b, n)).sum();
+  return parallel_sum(static_cast<std::size_t>(a.rows()), partial, [&](std::size_t begin, std::size_t end) {
+    const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+    return a.middleRows(first, n).template cast<double>().cwiseProduct(b.middleRows(first, n).template cast<double>()).sum();
   });
 }
 
-// Y += a X in parallel over blocks of vertices.
-inline void add_scaled(Points& Y, double a, const Points& X)
+// y += s x in parallel over blocks of vertices.
+template <typename X>
+void add_scaled(Points& y, double s, const X& x)
 {
-  parallel_for_blocks(static_cast<std::size_t>(Y.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-    const auto n = static_cast<Eigen::Index>(end - begin), b = static_cast<Eigen::Index>(begin);
-    Y.middleRows(b, n) += a * X.middleRows(b, n);
+  parallel_for_blocks(static_cast<std::size_t>(y.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+    const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+    y.middleRows(first, n) += s * x.middleRows(first, n).template cast<double>();
   });
 }
 

@@ -3,20 +3,25 @@
 //
 // The default solver: a projected limited-memory BFGS method on the binding constraints.
 //
-// Why not the paper's Newton method: its model of the Hessian, S M^-1 S on the input mesh,
-// treats every direction of a vertex alike, while the bending energy is stiff along the
-// surface normal and soft along the surface, where vertices slide to even out their triangles;
-// once the noise is gone, that sliding is most of the remaining decrease, and the factorized
-// model steps across it slowly. Quasi-Newton pairs learn that curvature from the gradients
-// themselves, with no factorization, and cost one energy and gradient evaluation per
-// iteration in the common case where the step 1 is accepted.
+// Why not the paper's Newton method: its model of the Hessian, S M^-1 S on the input mesh, is
+// fixed and treats every direction of a vertex alike, while the bending energy of a noisy mesh
+// is stiff along the surface normal and soft along the surface, and far stiffer on small or
+// needle triangles than on the others. Quasi-Newton pairs learn the curvature from the
+// gradients themselves, with no factorization, and cost one energy and gradient evaluation per
+// iteration in the common case where the step 1 is accepted. Their initial matrix scales each
+// vertex by its stiffness along the normal (Bending_energy::value_and_gradient()), recomputed
+// at every iterate: without it, the few stiff vertices dictate the step of all the others.
+//
+// The pairs are stored in single precision: they only shape the direction, whose descent is
+// checked in double, and they are most of the solver's memory.
 //
 // Each iteration:
 //  1. the active set: the vertices on the boundary of their bound that -g pushes outwards;
 //  2. the direction d = -H g restricted to that face, H the L-BFGS inverse Hessian of the last
-//     `memory` steps (the restricted -g when H gives no descent direction, or has no pairs);
-//  3. backtracking along P(x + t d) from t = 1 (from the last accepted gradient step when H
-//     has no pairs) until E(y) < E(x) + lambda <g, y - x>.
+//     `memory` steps with H0 = gamma K^-1, K the vertices' stiffness and gamma fitted to the
+//     newest pair (d = -K^-1 g restricted when H gives no descent direction, or has no pairs);
+//  3. backtracking along P(x + t d) from t = 1 (from the last accepted step along -K^-1 g
+//     when H has no pairs) until E(y) < E(x) + lambda <g, y - x> (Projected_line_search).
 // If that search fails, the pairs are dropped and the iteration is redone along the
 // projected gradient; if that fails too, x is stationary up to rounding. Every accepted point
 // lies in the feasible set and has a lower energy than the one before.
@@ -56,13 +61,14 @@ public:
   Solver_report run(Points& X, const Solver_options& options, const Callback& callback)
   {
     Solver_report report;
-    double E = m_energy.value_and_gradient(X, m_G);
+    double E = m_energy.value_and_gradient(X, m_G, &m_K);
     report.initial_energy = E;
     Energy_history history(options);
     history.push(E);
-    // The first gradient step moves the vertex of largest gradient by epsilon.
-    const double largest_gradient = m_G.rowwise().norm().maxCoeff();
-    double t_gradient = largest_gradient > 0 ? m_bound.epsilon() / largest_gradient : 0;
+    // The first step moves the vertex of largest scaled gradient by epsilon.
+    precondition(m_G, m_D);
+    const double largest_step = m_D.rowwise().norm().maxCoeff();
+    double t_gradient = largest_step > 0 ? m_bound.epsilon() / largest_step : 0;
     m_pairs = 0;
 
     while(report.iterations < options.max_iterations)
@@ -73,21 +79,30 @@ public:
         break;
       }
       m_active.compute(m_bound, X, m_G);
-      m_D.noalias() = -m_G;
-      m_active.restrict(m_D);
+      m_Q.noalias() = -m_G;
+      m_active.restrict(m_Q);
+      double slope = 0;
       if(m_pairs > 0)
       {
-        apply_inverse_hessian(m_D);
+        apply_inverse_hessian(m_Q, m_D);
         m_active.restrict(m_D);
-        if(!(dot(m_D, m_G, m_partial) < 0))
-          restart();
+        slope = dot(m_D, m_G, m_partial);
+      }
+      if(m_pairs == 0 || !(slope < 0))
+      {
+        m_pairs = 0;
+        m_Q.noalias() = -m_G;
+        m_active.restrict(m_Q);
+        precondition(m_Q, m_D);
+        slope = dot(m_D, m_G, m_partial);
       }
 
       const auto sufficient = [&](double e, const Points& Y) {
         return e < E + sufficient_decrease * (m_G.cwiseProduct(Y - X)).sum();
       };
       Projected_line_search::Accepted accepted{m_X};
-      if(!m_search.backtrack(X, m_D, m_pairs > 0 ? 1. : t_gradient, m_bound, m_energy, sufficient, accepted, m_G_next))
+      const double t0 = m_pairs > 0 ? 1. : t_gradient;
+      if(!m_search.backtrack(X, m_D, t0, E, slope, m_bound, m_energy, sufficient, accepted, m_G_next, m_K_next))
       {
         if(m_pairs > 0)
         {
@@ -102,6 +117,7 @@ public:
       add_pair(X, m_G);
       X.swap(m_X);
       m_G.swap(m_G_next);
+      m_K.swap(m_K_next);
       E = accepted.energy;
       history.push(E);
       ++report.iterations;
@@ -123,11 +139,19 @@ public:
   }
 
 private:
-  void restart()
+  // D = K^-1 R, vertex by vertex (a vertex with no stiffness is in no hinge: it stays)
+  template <typename R>
+  void precondition(const R& r, Points& D) const
   {
-    m_pairs = 0;
-    m_D.noalias() = -m_G;
-    m_active.restrict(m_D);
+    D.resize(r.rows(), 3);
+    parallel_for_blocks(static_cast<std::size_t>(r.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const double k = m_K[static_cast<Eigen::Index>(i)];
+        const auto row = static_cast<Eigen::Index>(i);
+        D.row(row) = k > 0 ? Eigen::RowVector3d(r.row(row).template cast<double>() / k) : Eigen::RowVector3d::Zero();
+      }
+    });
   }
 
   // Stores s = x_next - x and y = g_next - g if their curvature s.y is positive (else the
@@ -135,8 +159,8 @@ private:
   void add_pair(const Points& X, const Points& G)
   {
     const std::size_t slot = (m_newest + 1) % memory;
-    m_s[slot].noalias() = m_X - X;
-    m_y[slot].noalias() = m_G_next - G;
+    m_s[slot] = (m_X - X).cast<float>();
+    m_y[slot] = (m_G_next - G).cast<float>();
     const double sy = dot(m_s[slot], m_y[slot], m_partial);
     if(!(sy > 0))
     {
@@ -150,17 +174,20 @@ private:
       ++m_pairs;
   }
 
-  // D = H D by the two-loop recursion, H0 = (s.y / y.y) I from the newest pair.
-  void apply_inverse_hessian(Points& D)
+  // D = H Q by the two-loop recursion, H0 = gamma K^-1 with gamma = s.y / (y.K^-1 y) for the
+  // newest pair (Q is overwritten).
+  void apply_inverse_hessian(Points& Q, Points& D)
   {
     for(std::size_t k = 0; k < m_pairs; ++k) // newest to oldest
     {
       const std::size_t j = (m_newest + memory - k) % memory;
-      m_alpha[j] = m_rho[j] * dot(m_s[j], D, m_partial);
-      add_scaled(D, -m_alpha[j], m_y[j]);
+      m_alpha[j] = m_rho[j] * dot(m_s[j], Q, m_partial);
+      add_scaled(Q, -m_alpha[j], m_y[j]);
     }
-    const double yy = dot(m_y[m_newest], m_y[m_newest], m_partial);
-    D *= 1 / (m_rho[m_newest] * yy);
+    precondition(m_y[m_newest], D);
+    const double gamma = 1 / (m_rho[m_newest] * dot(m_y[m_newest], D, m_partial));
+    precondition(Q, D);
+    D *= gamma;
     for(std::size_t k = m_pairs; k-- > 0;) // oldest to newest
     {
       const std::size_t j = (m_newest + memory - k) % memory;
@@ -173,8 +200,10 @@ private:
   Bending_energy& m_energy;
   Active_set<Bound> m_active;
   Projected_line_search m_search;
-  Points m_G, m_D, m_X, m_G_next; // gradient, direction, next point and its gradient
-  std::array<Points, memory> m_s, m_y;
+  // gradient, direction, work buffer, next point and its gradient
+  Points m_G, m_D, m_Q, m_X, m_G_next;
+  Eigen::VectorXd m_K, m_K_next; // the stiffness at the iterate and at the next point
+  std::array<Float_points, memory> m_s, m_y;
   std::array<double, memory> m_rho{}, m_alpha{};
   std::size_t m_pairs = 0, m_newest = 0;
   std::vector<double> m_partial;

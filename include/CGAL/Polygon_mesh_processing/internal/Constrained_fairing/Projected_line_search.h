@@ -8,9 +8,9 @@
 //    double t while the descent condition holds, or halve it until it holds. Doubling also
 //    stops as soon as the energy no longer improves on the last accepted point, so that a
 //    longer step is never taken for a worse one.
-//  - backtrack(): for quasi-Newton directions, whose natural step is 1: halve t from t0 until
-//    the condition holds, evaluating the gradient with the energy since the accepted point
-//    needs it next.
+//  - backtrack(): for quasi-Newton directions, whose natural step is 1: shorten t from t0
+//    until the condition holds, evaluating the gradient (and the stiffness) with the energy
+//    since the accepted point needs them next.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
@@ -48,50 +48,22 @@ public:
               const Condition& holds, Accepted& accepted)
   {
     double t = t0;
-    if(try_step(x, v, t, bound, energy, holds, nullptr))
+    if(try_step(x, v, t, bound, energy, holds))
     {
       accept(t, accepted);
       for(int k = 0; k < max_doublings; ++k)
       {
         t *= 2;
-        if(!try_step(x, v, t, bound, energy, holds, nullptr) || !(m_trial_energy < accepted.energy))
+        if(!try_step(x, v, t, bound, energy, holds) || !(m_trial_energy < accepted.energy))
           break;
         accept(t, accepted);
       }
       return true;
     }
-    return halve(x, v, t, bound, energy, holds, nullptr, accepted);
-  }
-
-  // Halving from t0 only, with the gradient at the accepted point written to G.
-  template <typename Bound, typename Condition>
-  bool backtrack(const Points& x, const Points& v, double t0, const Bound& bound, Bending_energy& energy,
-                 const Condition& holds, Accepted& accepted, Points& G)
-  {
-    if(try_step(x, v, t0, bound, energy, holds, &m_trial_gradient))
-    {
-      accept(t0, accepted);
-      std::swap(G, m_trial_gradient);
-      return true;
-    }
-    if(!halve(x, v, t0, bound, energy, holds, &m_trial_gradient, accepted))
-      return false;
-    std::swap(G, m_trial_gradient);
-    return true;
-  }
-
-  // Energy evaluations so far, with or without the gradient.
-  std::size_t evaluations() const { return m_evaluations; }
-
-private:
-  template <typename Bound, typename Condition>
-  bool halve(const Points& x, const Points& v, double t, const Bound& bound, Bending_energy& energy,
-             const Condition& holds, Points* gradient, Accepted& accepted)
-  {
     for(int k = 0; k < max_halvings; ++k)
     {
       t /= 2;
-      if(try_step(x, v, t, bound, energy, holds, gradient))
+      if(try_step(x, v, t, bound, energy, holds))
       {
         accept(t, accepted);
         return true;
@@ -100,16 +72,55 @@ private:
     return false;
   }
 
+  // From t0 only down, for a direction v along which the energy E0 at x has the slope
+  // <g, v>: each rejected step t is followed by the minimizer of the quadratic through E0,
+  // that slope and the rejected energy, kept within [t/10, t/2]. The trial points are written
+  // straight to `accepted.point`, with the gradient and the stiffness
+  // (Bending_energy::value_and_gradient()) to G and K, so that the accepted one needs no
+  // copy; on failure, all three hold the last rejected trial.
+  template <typename Bound, typename Condition>
+  bool backtrack(const Points& x, const Points& v, double t0, double E0, double slope, const Bound& bound,
+                 Bending_energy& energy, const Condition& holds, Accepted& accepted, Points& G, Eigen::VectorXd& K)
+  {
+    double t = t0;
+    for(int k = 0; k < max_halvings; ++k)
+    {
+      accepted.point.noalias() = x + t * v;
+      if(accepted.point.allFinite())
+      {
+        bound.project(accepted.point);
+        ++m_evaluations;
+        const double e = energy.value_and_gradient(accepted.point, G, &K);
+        if(holds(e, accepted.point))
+        {
+          accepted.energy = e;
+          accepted.step = t;
+          return true;
+        }
+        const double curvature = e - E0 - slope * t;
+        const double t_model = curvature > 0 ? -slope * t * t / (2 * curvature) : 0;
+        t = (std::min)((std::max)(t_model, 0.1 * t), 0.5 * t);
+      }
+      else
+        t /= 2;
+    }
+    return false;
+  }
+
+  // Energy evaluations so far, with or without the gradient.
+  std::size_t evaluations() const { return m_evaluations; }
+
+private:
   template <typename Bound, typename Condition>
   bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Bending_energy& energy,
-                const Condition& holds, Points* gradient)
+                const Condition& holds)
   {
     m_trial.noalias() = x + t * v;
     if(!m_trial.allFinite()) // a step so long that it overflows is no candidate
       return false;
     bound.project(m_trial);
     ++m_evaluations;
-    m_trial_energy = gradient ? energy.value_and_gradient(m_trial, *gradient) : energy.value(m_trial);
+    m_trial_energy = energy.value(m_trial);
     return holds(m_trial_energy, m_trial);
   }
 
@@ -120,7 +131,7 @@ private:
     accepted.step = t;
   }
 
-  Points m_trial, m_trial_gradient;
+  Points m_trial;
   double m_trial_energy = 0;
   std::size_t m_evaluations = 0;
 };
