@@ -204,6 +204,50 @@ void check_degenerate_triangles()
   CHECK(test::number_of_degenerate_faces(moved) >= 30);
 }
 
+// The stiffness along the normal (the Gauss-Newton diagonal that scales the quasi-Newton
+// steps): positive wherever a vertex is in a hinge, invariant under rigid motions, scaling as
+// 1 / s^2 (the energy is scale invariant), and on a flat patch, where the Gauss-Newton model is
+// exact to second order, a bound on the true second derivative along the normal: it cannot
+// exceed 4 K (K sums the two triangles' terms of a hinge separately).
+void check_stiffness()
+{
+  Mesh m = test::icosphere(2);
+  test::add_noise(m, 0.05, 11);
+  const Indexed x(m);
+  CF::Bending_energy E(x.hinges, x.X);
+  CF::Points G;
+  Eigen::VectorXd K, K_moved, K_scaled;
+  E.value_and_gradient(x.X, G, &K);
+  CHECK(K.size() == x.X.rows() && (K.array() > 0).all());
+
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const CF::Points moved = (x.X * R.transpose()).rowwise() + Eigen::RowVector3d(0.3, -2, 5);
+  CF::Bending_energy(x.hinges, moved).value_and_gradient(moved, G, &K_moved);
+  CHECK((K_moved - K).norm() <= 1e-9 * K.norm());
+  const CF::Points scaled = 4 * x.X;
+  CF::Bending_energy(x.hinges, scaled).value_and_gradient(scaled, G, &K_scaled);
+  CHECK((16 * K_scaled - K).norm() <= 1e-12 * K.norm());
+
+  Mesh plane = test::plane_patch(7);
+  Indexed p(plane);
+  CF::Bending_energy flat(p.hinges, p.X);
+  flat.value_and_gradient(p.X, G, &K);
+  std::size_t interior = 0;
+  for(Eigen::Index i = 0; i < p.X.rows(); ++i)
+  {
+    const double x0 = p.X(i, 0), y0 = p.X(i, 1);
+    if(x0 <= 0 || x0 >= 1 || y0 <= 0 || y0 >= 1)
+      continue;
+    ++interior;
+    const double d = 1e-4;
+    CF::Points Y = p.X;
+    Y(i, 2) = d;
+    const double second = 2 * flat.value(Y) / (d * d); // E is 0 and stationary at the plane
+    CHECK(second > 0 && second <= 4 * K[i] * (1 + 1e-6));
+  }
+  CHECK(interior == 25);
+}
+
 int main()
 {
   check_hand_computed_hinges();
@@ -212,5 +256,6 @@ int main()
   check_gradients();
   check_extreme_scales();
   check_degenerate_triangles();
+  check_stiffness();
   return test::report("test_bending_energy");
 }

@@ -1,0 +1,103 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default solver, the projected quasi-Newton method: on a noisy plane within a bound that
+// contains the plane, the minimum (energy 0) is known and must be approached, with every
+// iterate in the bound and the energy never rising; and the result is bit-identical whatever
+// the number of threads.
+
+#include "test_support.h"
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+using PMP::Deviation_bound;
+using test::Mesh;
+using test::Point;
+
+// The largest violation of the bound, computed as a user does, in double.
+double violation(const std::vector<Point>& out, const std::vector<Point>& in, double eps, Deviation_bound shape)
+{
+  double worst = 0;
+  for(std::size_t i = 0; i < out.size(); ++i)
+  {
+    if(shape == Deviation_bound::BALL)
+    {
+      const double d2 = CGAL::squared_distance(out[i], in[i]);
+      if(!(d2 <= eps * eps && std::sqrt(d2) <= eps))
+        worst = (std::max)(worst, std::sqrt(d2) - eps);
+    }
+    else
+      for(int c = 0; c < 3; ++c)
+        if(!(std::abs(out[i][c] - in[i][c]) <= eps))
+          worst = (std::max)(worst, std::abs(out[i][c] - in[i][c]) - eps);
+  }
+  return worst;
+}
+
+void check_known_minimum(Deviation_bound shape)
+{
+  Mesh m = test::plane_patch(30);
+  const double h = test::mean_edge_length(m);
+  test::add_noise(m, 0.3 * h, 21);
+  const std::vector<Point> input = test::points(m);
+  std::vector<double> energies;
+  const auto r = PMP::constrained_fairing(
+    m, 0.3 * h,
+    CFP::iteration_callback([&](std::size_t, double e) { energies.push_back(e); return true; },
+                            CFP::deviation_bound(shape).number_of_iterations(200)));
+  CHECK(r);
+  CHECK(violation(test::points(m), input, 0.3 * h, shape) == 0);
+  CHECK(std::is_sorted(energies.rbegin(), energies.rend()));
+  CHECK(!energies.empty() && energies.back() == r.final_energy);
+  // The plane has energy 0: 200 iterations must come within a ten-thousandth of the start.
+  CHECK(r.final_energy <= 1e-4 * r.initial_energy);
+  // One evaluation per iteration in the common case, and never many more.
+  CHECK(r.number_of_energy_evaluations <= 2 * r.number_of_iterations + 1);
+  double rms = 0;
+  for(const Point& p : test::points(m))
+    rms += p.z() * p.z();
+  std::cout << "  noisy plane, " << (shape == Deviation_bound::BALL ? "ball" : "box") << ": energy "
+            << r.initial_energy << " -> " << r.final_energy << " in " << r.number_of_iterations << " iterations, "
+            << r.number_of_energy_evaluations << " evaluations, RMS height " << std::sqrt(rms / double(input.size()))
+            << std::endl;
+}
+
+// Bit-identical results with one thread and with all of them.
+void check_thread_count_independence()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  Mesh m = test::icosphere(4);
+  const double h = test::mean_edge_length(m);
+  test::add_noise(m, 0.25 * h, 22);
+  Mesh one = m, all = m;
+  PMP::Constrained_fairing_result r_one, r_all;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    r_one = PMP::constrained_fairing(one, 0.25 * h, CGAL::parameters::number_of_iterations(40));
+  }
+  r_all = PMP::constrained_fairing(all, 0.25 * h, CGAL::parameters::number_of_iterations(40));
+  CHECK(r_one && r_all && r_one.number_of_iterations == 40);
+  CHECK(r_one.final_energy == r_all.final_energy);
+  CHECK(test::identical(test::points(one), test::points(all)));
+  std::cout << "  one thread and " << tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)
+            << " threads: bit-identical" << std::endl;
+#else
+  std::cout << "  built without TBB: the loops are sequential" << std::endl;
+#endif
+}
+
+int main()
+{
+  check_known_minimum(Deviation_bound::BALL);
+  check_known_minimum(Deviation_bound::BOX);
+  check_thread_count_independence();
+  return test::report("test_projected_lbfgs");
+}
