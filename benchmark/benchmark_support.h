@@ -61,18 +61,11 @@ inline double make_noisy_case(const Mesh& base, unsigned int levels, Mesh& noisy
   return h;
 }
 
-// The mesh the speed benchmarks start from: the Stanford bunny of CGAL's sample data (75,408
-// triangles) from the project's sibling folder shared/data when it is there, else the
-// bundled elephant. Says which.
+// The mesh the speed benchmarks start from, unless one is given: the bundled Stanford bunny of
+// CGAL's sample data (75,408 triangles).
 inline bool read_base_mesh(const std::string& given, Mesh& base, std::string& name)
 {
-  name = given;
-  if(name.empty())
-  {
-    name = CONSTRAINED_FAIRING_SHARED_DATA "/bunny00.off";
-    if(!std::ifstream(name))
-      name = CONSTRAINED_FAIRING_DATA_DIR "/elephant.off";
-  }
+  name = given.empty() ? std::string(CONSTRAINED_FAIRING_DATA_DIR "/bunny00.off") : given;
   return CGAL::IO::read_polygon_mesh(name, base);
 }
 

@@ -6,7 +6,7 @@
 //
 //   fairing_scaling [MESH] [--level L] [--runs N]
 //
-// MESH (default: the shared bunny, else the bundled elephant; see benchmark_support.h) is Loop
+// MESH (default: the bundled bunny, data/bunny00.off) is Loop
 // subdivided L times (default 1) and given seeded noise of 0.25 h; epsilon = 0.25 h. Reports,
 // all measured in this process, medians of N runs (default 3):
 //  - the default call as a user makes it: time, iterations, energy evaluations, energy;
@@ -95,7 +95,7 @@ int main(int argc, char* argv[])
   for(auto v : vertices(noisy))
     X0.row(static_cast<Eigen::Index>(get(vertex_index, v))) << input[v.idx()].x(), input[v.idx()].y(),
       input[v.idx()].z();
-  Eigen::VectorXd K;
+  CF::Vertex_scales K;
   double evaluation = 0, factorization = 0;
   {
     const CF::Hinge_mesh mesh(noisy, vertex_index);

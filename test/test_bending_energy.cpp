@@ -204,11 +204,12 @@ void check_degenerate_triangles()
   CHECK(test::number_of_degenerate_faces(moved) >= 30);
 }
 
-// The stiffness along the normal (the Gauss-Newton diagonal that scales the quasi-Newton
-// steps): positive wherever a vertex is in a hinge, invariant under rigid motions, scaling as
-// 1 / s^2 (the energy is scale invariant), and on a flat patch, where the Gauss-Newton model is
-// exact to second order, a bound on the true second derivative along the normal: it cannot
-// exceed 4 K (K sums the two triangles' terms of a hinge separately).
+// The vertex scales of the quasi-Newton method. The stiffness along the normal (the
+// Gauss-Newton diagonal): positive wherever a vertex is in a hinge, invariant under rigid
+// motions, scaling as 1 / s^2 (the energy is scale invariant), and on a flat patch, where the
+// Gauss-Newton model is exact to second order, a bound on the true second derivative along the
+// normal: it cannot exceed 4 K (K sums the two triangles' terms of a hinge separately). The
+// reach: the smallest height over the opposite edge, invariant and scaling as s.
 void check_stiffness()
 {
   Mesh m = test::icosphere(2);
@@ -216,22 +217,26 @@ void check_stiffness()
   const Indexed x(m);
   CF::Bending_energy E(x.hinges, x.X);
   CF::Points G;
-  Eigen::VectorXd K, K_moved, K_scaled;
-  E.value_and_gradient(x.X, G, &K);
+  CF::Vertex_scales S, S_moved, S_scaled;
+  E.value_and_gradient(x.X, G, &S);
+  const Eigen::VectorXd& K = S.stiffness;
   CHECK(K.size() == x.X.rows() && (K.array() > 0).all());
+  CHECK(S.reach.size() == x.X.rows() && (S.reach.array() > 0).all());
 
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   const CF::Points moved = (x.X * R.transpose()).rowwise() + Eigen::RowVector3d(0.3, -2, 5);
-  CF::Bending_energy(x.hinges, moved).value_and_gradient(moved, G, &K_moved);
-  CHECK((K_moved - K).norm() <= 1e-9 * K.norm());
+  CF::Bending_energy(x.hinges, moved).value_and_gradient(moved, G, &S_moved);
+  CHECK((S_moved.stiffness - K).norm() <= 1e-9 * K.norm());
+  CHECK((S_moved.reach - S.reach).norm() <= 1e-9 * S.reach.norm());
   const CF::Points scaled = 4 * x.X;
-  CF::Bending_energy(x.hinges, scaled).value_and_gradient(scaled, G, &K_scaled);
-  CHECK((16 * K_scaled - K).norm() <= 1e-12 * K.norm());
+  CF::Bending_energy(x.hinges, scaled).value_and_gradient(scaled, G, &S_scaled);
+  CHECK((16 * S_scaled.stiffness - K).norm() <= 1e-12 * K.norm());
+  CHECK((S_scaled.reach - 4 * S.reach).norm() <= 1e-12 * S.reach.norm());
 
   Mesh plane = test::plane_patch(7);
   Indexed p(plane);
   CF::Bending_energy flat(p.hinges, p.X);
-  flat.value_and_gradient(p.X, G, &K);
+  flat.value_and_gradient(p.X, G, &S);
   std::size_t interior = 0;
   for(Eigen::Index i = 0; i < p.X.rows(); ++i)
   {
@@ -243,7 +248,11 @@ void check_stiffness()
     CF::Points Y = p.X;
     Y(i, 2) = d;
     const double second = 2 * flat.value(Y) / (d * d); // E is 0 and stationary at the plane
-    CHECK(second > 0 && second <= 4 * K[i] * (1 + 1e-6));
+    CHECK(second > 0 && second <= 4 * S.stiffness[i] * (1 + 1e-6));
+    // the grid's triangles are right isosceles of legs 1/6: the height over the opposite edge
+    // is 1/(6 sqrt 2) at a right angle, 1/6 at the others
+    const double r = S.reach[i];
+    CHECK(std::abs(r - 1 / (6 * std::sqrt(2.))) <= 1e-12 || std::abs(r - 1 / 6.) <= 1e-12);
   }
   CHECK(interior == 25);
 }

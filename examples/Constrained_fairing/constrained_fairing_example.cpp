@@ -204,7 +204,7 @@ int main(int argc, char* argv[])
   }
   std::cout << "iterations:  " << result.number_of_iterations << " ("
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
-            << ", " << result.number_of_cg_iterations << " conjugate gradient iterations)" << std::endl;
+            << ", " << result.number_of_energy_evaluations << " energy evaluations)" << std::endl;
   std::cout << "energy:      " << result.initial_energy << " -> " << result.final_energy << std::endl;
   if(result.number_of_degenerate_edges > 0)
     std::cout << "degenerate:  " << result.number_of_degenerate_edges

@@ -51,14 +51,17 @@ int main(int argc, char* argv[])
   std::cout << "box of side 2 eps: energy " << box.initial_energy << " -> " << box.final_energy << ", max |p - p0| "
             << box.max_deviation << std::endl;
 
-  // Or append CGAL's pack to one of ours: here a sparse solver of one's choice.
+  // Or append CGAL's pack to one of ours: here the paper's Newton method, with a sparse solver
+  // of one's choice to factorize its Hessian model.
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
   using Solver = CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
 #else
   using Solver = CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
 #endif
   const auto ball = PMP::constrained_fairing(
-    mesh, epsilon, CFP::energy_decrease_threshold(1e-4, CGAL::parameters::sparse_linear_solver(Solver())));
+    mesh, epsilon,
+    CFP::fairing_method(PMP::Constrained_fairing_method::ACTIVE_SET_NEWTON,
+                        CGAL::parameters::sparse_linear_solver(Solver())));
   if(!ball)
   {
     std::cerr << "error: " << ball.message << std::endl;

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_lbfgs.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_order.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/assertions.h>
@@ -76,8 +77,11 @@ inline Solver_options default_options(Constrained_fairing_method method)
 \brief fairs a triangle mesh while keeping every vertex within `epsilon` of its input position.
 
 Minimizes the discrete bending energy of Wardetzky et al. over all vertex positions `p` with
-`|p - p0| <= epsilon` (`p0` the input position), by the active set Newton method of
-K. Hildebrandt and K. Polthier, "Constraint-based fairing of surface meshes", SGP 2007.
+`|p - p0| <= epsilon` (`p0` the input position), the problem of K. Hildebrandt and
+K. Polthier, "Constraint-based fairing of surface meshes", SGP 2007. The default method is a
+projected quasi-Newton (L-BFGS) method that reaches a given energy several times sooner than the
+paper's active set Newton method and its explicit projected gradient method, which remain
+available through `fairing_method`.
 Noise and terracing go; nothing moves farther than `epsilon`, so setting `epsilon` to the
 accuracy of the data (a scanner's precision, the voxel size of an isosurface) keeps that
 accuracy. More iterations can only lower the energy. The connectivity is not changed; border
@@ -89,8 +93,12 @@ points as doubles, `squared_distance(p, p0) <= epsilon * epsilon` and
 likewise for `y` and `z` (box).
 
 The iterations stop when the energy decreased by less than `energy_decrease_threshold` per
-iteration, on average over the last three iterations, when no feasible direction decreases it,
-or after `number_of_iterations` iterations.
+iteration relatively, on average over the last 50 iterations (quasi-Newton method) or the last
+three (the paper's methods), when no feasible direction decreases it, or after
+`number_of_iterations` iterations.
+
+The loops over vertices, triangles and hinges run in parallel when %CGAL is linked with TBB
+(`CGAL_LINKED_WITH_TBB`); the result is bit-identical for any number of threads.
 
 <b>Input.</b> The mesh is checked before anything else; a mesh that breaks this contract gives
 `Constrained_fairing_status::INVALID_INPUT`, a message naming the defect and the first
@@ -105,6 +113,7 @@ The checks, in the order they are made:
 - two neighbouring faces oriented inconsistently (both run through their shared vertices in
   the same direction): the dihedral angles of the energy need a consistent orientation;
 - a non-manifold vertex, whose faces form more than one fan;
+- more than 2^32 - 1 vertices or 1,431,655,765 faces;
 - a NaN or infinite coordinate;
 - `epsilon` negative, zero, NaN or infinite;
 - all triangles of zero area.
@@ -149,18 +158,22 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of iterations; `0` leaves the mesh untouched}
+    \cgalParamDescription{the largest number of iterations; `0` leaves the mesh untouched. An
+                          iteration is one accepted step of the quasi-Newton method (usually one
+                          evaluation of the energy and its gradient), or a Cauchy step followed by
+                          a Newton step (`ACTIVE_SET_NEWTON`), or a Cauchy step (`PROJECTED_GRADIENT`)}
     \cgalParamType{unsigned int}
-    \cgalParamDefault{`200`}
+    \cgalParamDefault{`1000` for `QUASI_NEWTON`, `200` for the paper's methods}
   \cgalParamNEnd
   \cgalParamNBegin{sparse_linear_solver}
     \cgalParamDescription{the solver that factorizes the Hessian approximation once and then
-                          solves with it (Newton method only)}
+                          solves with it (`ACTIVE_SET_NEWTON` only; the other methods solve no
+                          linear system)}
     \cgalParamType{a class model of `SparseLinearAlgebraWithFactorTraits_d`}
     \cgalParamDefault{`CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`}
-    \cgalParamExtra{The solves dominate the time on large meshes: `Eigen::CholmodSupernodalLLT`
-                    (Eigen's `CholmodSupport`, with an optimized BLAS) made the whole call 1.4
-                    times faster at 178 k vertices, and no faster below 50 k.}
+    \cgalParamExtra{The solves dominate the Newton method's time on large meshes, where
+                    `Eigen::CholmodSupernodalLLT` (Eigen's `CholmodSupport`, with an optimized
+                    BLAS) is faster.}
   \cgalParamNEnd
   \cgalParamNBegin{deviation_bound}
     \cgalParamDescription{the shape of the set each vertex stays in: the ball of radius
@@ -171,20 +184,20 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
   \cgalParamNBegin{fairing_method}
     \cgalParamDescription{the optimization method}
     \cgalParamType{`CGAL::Polygon_mesh_processing::Constrained_fairing_method`}
-    \cgalParamDefault{`Constrained_fairing_method::ACTIVE_SET_NEWTON`}
+    \cgalParamDefault{`Constrained_fairing_method::QUASI_NEWTON`}
   \cgalParamNEnd
   \cgalParamNBegin{energy_decrease_threshold}
     \cgalParamDescription{the stopping threshold on the relative energy decrease per
-                          iteration (averaged over three iterations); `0` runs all
-                          `number_of_iterations` iterations}
+                          iteration (averaged over 50 iterations for `QUASI_NEWTON`, three for the
+                          paper's methods); `0` runs all `number_of_iterations` iterations}
     \cgalParamType{double}
-    \cgalParamDefault{`1e-3`}
+    \cgalParamDefault{`1e-4` for `QUASI_NEWTON`, `1e-3` for the paper's methods}
   \cgalParamNEnd
   \cgalParamNBegin{conjugate_gradient_iterations}
     \cgalParamDescription{the largest number of preconditioned conjugate gradient iterations
-                          per Newton step, at least 1 (fewer when the residual fell by 100); the thin plate
-                          Hessian only models the energy's, and one iteration lowered the energy
-                          fastest per second in our measurements}
+                          per Newton step (`ACTIVE_SET_NEWTON` only), at least 1 (fewer when the
+                          residual fell by 100); the thin plate Hessian only models the energy's,
+                          and one iteration lowered the energy fastest per second in our measurements}
     \cgalParamType{std::size_t}
     \cgalParamDefault{`1`}
   \cgalParamNEnd
@@ -197,8 +210,8 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\return a `Constrained_fairing_result`: the status, the iterations, the energy before and
-        after, the largest deviation reached, and on failure the reason.
+\return a `Constrained_fairing_result`: the status, the iterations and energy evaluations, the
+        energy before and after, the largest deviation reached, and on failure the reason.
 
 \warning The computation is done in double precision, and so is the guarantee.
 */
@@ -263,6 +276,18 @@ Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsil
   if(!result.message.empty())
     return result;
 
+  // From here on, the vertices are stored in the Hilbert order of their input positions.
+  {
+    const std::vector<CF::Index> rank = CF::hilbert_rank(X0);
+    CF::Points sorted(X0.rows(), 3);
+    for(auto v : vertices(tmesh))
+    {
+      const std::size_t i = get(vertex_index, v);
+      sorted.row(rank[i]) = X0.row(static_cast<Eigen::Index>(i));
+      put(vertex_index, v, std::size_t(rank[i]));
+    }
+    X0.swap(sorted);
+  }
   const CF::Hinge_mesh mesh(tmesh, vertex_index);
   CF::Bending_energy energy(mesh, X0);
   if(!energy.is_defined())

@@ -43,12 +43,29 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
+
+// What the quasi-Newton method needs to know of each vertex besides the gradient.
+struct Vertex_scales
+{
+  // along the surface normal: the Gauss-Newton diagonal (see value_and_gradient())
+  Eigen::VectorXd stiffness;
+  // the smallest height of the vertex over the opposite edge in its triangles: a move shorter
+  // than that cannot flip or collapse one of them
+  Eigen::VectorXd reach;
+
+  void swap(Vertex_scales& other)
+  {
+    stiffness.swap(other.stiffness);
+    reach.swap(other.reach);
+  }
+};
 
 class Bending_energy
 {
@@ -101,34 +118,40 @@ public:
   // dE = sum <a, dN>. Moving vertex k of a triangle by d changes N by d x (p_(k+1) - p_(k+2)),
   // so the triangle then adds a x (p_(k+2) - p_(k+1)) to the gradient at that vertex.
   //
-  // With `stiffness`, also writes each vertex's stiffness along the surface normal: the
+  // With `scales`, also writes each vertex's reach and its stiffness along the surface normal: the
   // diagonal of the Gauss-Newton model of the Hessian, which drops the second derivatives of
   // the normals. Written as E = sum |r_h|^2 with r_h = w_h (n1 - n2), w_h^2 = 3 L / (4 S), and
   // |dn/dp| = |p_(k+2) - p_(k+1)| / l for vertex k of a triangle (one over its height), a vertex
   // gets sum over its corners of |p_(k+2) - p_(k+1)|^2 / l^2 times the triangle's sum of w_h^2.
   // It ranges over orders of magnitude on scans (small and needle triangles are stiff), which is
   // what the quasi-Newton method scales its steps by.
-  double value_and_gradient(const Points& X, Points& G, Eigen::VectorXd* stiffness = nullptr)
+  double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales = nullptr)
   {
     compute_triangles(X);
     const double energy = triangle_pass<true>();
     G.resize(X.rows(), 3);
-    if(stiffness)
-      stiffness->resize(X.rows());
+    if(scales)
+    {
+      scales->stiffness.resize(X.rows());
+      scales->reach.resize(X.rows());
+    }
     const Points& P = *m_points;
     const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
     parallel_for_blocks(m_mesh.number_of_vertices, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)
       {
         Eigen::Vector3d g = Eigen::Vector3d::Zero();
-        double k_normal = 0;
+        double k_normal = 0, height2 = std::numeric_limits<double>::infinity();
         for(Index c = m_corner_begin[i]; c < m_corner_begin[i + 1]; ++c)
         {
           const Index f = m_corners[c] / 3, k = m_corners[c] % 3;
           const auto& v = m_mesh.triangles[f];
           const Eigen::Vector3d opposite = point(P, v[(k + 2) % 3]) - point(P, v[(k + 1) % 3]);
           g += m_coefficient[f].cross(opposite);
-          k_normal += m_hinge_weight[f] * opposite.squaredNorm() / (m_frame[f].l * m_frame[f].l);
+          const double l2 = m_frame[f].l * m_frame[f].l, o2 = opposite.squaredNorm();
+          k_normal += m_hinge_weight[f] * o2 / l2;
+          if(o2 > 0)
+            height2 = (std::min)(height2, l2 / o2);
         }
         for(Index c = m_endpoint_begin[i]; c < m_endpoint_begin[i + 1]; ++c)
         {
@@ -141,8 +164,11 @@ public:
             g += m_edge_factor[h] * e;
         }
         point(G, i) = scale == 1 ? g : Eigen::Vector3d(scale * g);
-        if(stiffness)
-          (*stiffness)[static_cast<Eigen::Index>(i)] = scale * scale * k_normal;
+        if(scales)
+        {
+          scales->stiffness[static_cast<Eigen::Index>(i)] = scale * scale * k_normal;
+          scales->reach[static_cast<Eigen::Index>(i)] = std::sqrt(height2) / scale;
+        }
       }
     });
     return energy;

@@ -20,8 +20,10 @@
 //  2. the direction d = -H g restricted to that face, H the L-BFGS inverse Hessian of the last
 //     `memory` steps with H0 = gamma K^-1, K the vertices' stiffness and gamma fitted to the
 //     newest pair (d = -K^-1 g restricted when H gives no descent direction, or has no pairs);
-//  3. backtracking along P(x + t d) from t = 1 (from the last accepted step along -K^-1 g
-//     when H has no pairs) until E(y) < E(x) + lambda <g, y - x> (Projected_line_search).
+//  3. each vertex's move shortened to half its reach, so that no triangle flips or collapses;
+//  4. backtracking along P(x + t d) from t = 1 (d scaled by the last accepted step along
+//     -K^-1 g when H has no pairs) until E(y) < E(x) + lambda <g, y - x>
+//     (Projected_line_search).
 // If that search fails, the pairs are dropped and the iteration is redone along the
 // projected gradient; if that fails too, x is stationary up to rounding. Every accepted point
 // lies in the feasible set and has a lower energy than the one before.
@@ -52,6 +54,8 @@ public:
   static constexpr std::size_t memory = 5;
   // lambda of the sufficient decrease condition
   static constexpr double sufficient_decrease = 1e-4;
+  // the longest move of a vertex in one step, relative to its reach (Vertex_scales)
+  static constexpr double reach_fraction = 0.5;
 
   Projected_lbfgs(const Bound& bound, Bending_energy& energy) : m_bound(bound), m_energy(energy) {}
 
@@ -61,7 +65,7 @@ public:
   Solver_report run(Points& X, const Solver_options& options, const Callback& callback)
   {
     Solver_report report;
-    double E = m_energy.value_and_gradient(X, m_G, &m_K);
+    double E = m_energy.value_and_gradient(X, m_G, &m_scales);
     report.initial_energy = E;
     Energy_history history(options);
     history.push(E);
@@ -86,6 +90,7 @@ public:
       {
         apply_inverse_hessian(m_Q, m_D);
         m_active.restrict(m_D);
+        limit_to_reach(m_D);
         slope = dot(m_D, m_G, m_partial);
       }
       if(m_pairs == 0 || !(slope < 0))
@@ -94,6 +99,8 @@ public:
         m_Q.noalias() = -m_G;
         m_active.restrict(m_Q);
         precondition(m_Q, m_D);
+        m_D *= t_gradient;
+        limit_to_reach(m_D);
         slope = dot(m_D, m_G, m_partial);
       }
 
@@ -101,8 +108,7 @@ public:
         return e < E + sufficient_decrease * (m_G.cwiseProduct(Y - X)).sum();
       };
       Projected_line_search::Accepted accepted{m_X};
-      const double t0 = m_pairs > 0 ? 1. : t_gradient;
-      if(!m_search.backtrack(X, m_D, t0, E, slope, m_bound, m_energy, sufficient, accepted, m_G_next, m_K_next))
+      if(!m_search.backtrack(X, m_D, 1., E, slope, m_bound, m_energy, sufficient, accepted, m_G_next, m_scales_next))
       {
         if(m_pairs > 0)
         {
@@ -113,11 +119,11 @@ public:
         break;
       }
       if(m_pairs == 0)
-        t_gradient = accepted.step;
+        t_gradient *= accepted.step;
       add_pair(X, m_G);
       X.swap(m_X);
       m_G.swap(m_G_next);
-      m_K.swap(m_K_next);
+      m_scales.swap(m_scales_next);
       E = accepted.energy;
       history.push(E);
       ++report.iterations;
@@ -139,6 +145,22 @@ public:
   }
 
 private:
+  // Shortens the displacement of each vertex to at most half its reach: then no step can flip
+  // or collapse a triangle. Without this, the energy's pull towards slivers (see the user
+  // manual) makes the quasi-Newton step overshoot on a few vertices at nearly every iteration,
+  // and that one vertex gets the whole step rejected.
+  void limit_to_reach(Points& D) const
+  {
+    parallel_for_blocks(static_cast<std::size_t>(D.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const double length = point(D, i).norm(), limit = reach_fraction * m_scales.reach[static_cast<Eigen::Index>(i)];
+        if(length > limit)
+          point(D, i) *= limit / length;
+      }
+    });
+  }
+
   // D = K^-1 R, vertex by vertex (a vertex with no stiffness is in no hinge: it stays)
   template <typename R>
   void precondition(const R& r, Points& D) const
@@ -147,7 +169,7 @@ private:
     parallel_for_blocks(static_cast<std::size_t>(r.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)
       {
-        const double k = m_K[static_cast<Eigen::Index>(i)];
+        const double k = m_scales.stiffness[static_cast<Eigen::Index>(i)];
         const auto row = static_cast<Eigen::Index>(i);
         D.row(row) = k > 0 ? Eigen::RowVector3d(r.row(row).template cast<double>() / k) : Eigen::RowVector3d::Zero();
       }
@@ -202,7 +224,7 @@ private:
   Projected_line_search m_search;
   // gradient, direction, work buffer, next point and its gradient
   Points m_G, m_D, m_Q, m_X, m_G_next;
-  Eigen::VectorXd m_K, m_K_next; // the stiffness at the iterate and at the next point
+  Vertex_scales m_scales, m_scales_next; // at the iterate and at the next point
   std::array<Float_points, memory> m_s, m_y;
   std::array<double, memory> m_rho{}, m_alpha{};
   std::size_t m_pairs = 0, m_newest = 0;

@@ -9,7 +9,7 @@
 //    stops as soon as the energy no longer improves on the last accepted point, so that a
 //    longer step is never taken for a worse one.
 //  - backtrack(): for quasi-Newton directions, whose natural step is 1: shorten t from t0
-//    until the condition holds, evaluating the gradient (and the stiffness) with the energy
+//    until the condition holds, evaluating the gradient (and the vertex scales) with the energy
 //    since the accepted point needs them next.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
@@ -75,12 +75,12 @@ public:
   // From t0 only down, for a direction v along which the energy E0 at x has the slope
   // <g, v>: each rejected step t is followed by the minimizer of the quadratic through E0,
   // that slope and the rejected energy, kept within [t/10, t/2]. The trial points are written
-  // straight to `accepted.point`, with the gradient and the stiffness
-  // (Bending_energy::value_and_gradient()) to G and K, so that the accepted one needs no
+  // straight to `accepted.point`, with the gradient and the vertex scales
+  // (Bending_energy::value_and_gradient()) to G and scales, so that the accepted one needs no
   // copy; on failure, all three hold the last rejected trial.
   template <typename Bound, typename Condition>
   bool backtrack(const Points& x, const Points& v, double t0, double E0, double slope, const Bound& bound,
-                 Bending_energy& energy, const Condition& holds, Accepted& accepted, Points& G, Eigen::VectorXd& K)
+                 Bending_energy& energy, const Condition& holds, Accepted& accepted, Points& G, Vertex_scales& scales)
   {
     double t = t0;
     for(int k = 0; k < max_halvings; ++k)
@@ -90,7 +90,7 @@ public:
       {
         bound.project(accepted.point);
         ++m_evaluations;
-        const double e = energy.value_and_gradient(accepted.point, G, &K);
+        const double e = energy.value_and_gradient(accepted.point, G, &scales);
         if(holds(e, accepted.point))
         {
           accepted.energy = e;
