@@ -111,19 +111,8 @@ public:
       // m_Y is the accepted point: it becomes the iterate.
       X.swap(m_Y);
       E = m_energy.value_and_gradient(X, m_G);
-      history.push(E);
-      ++report.iterations;
-
-      if(!callback(report.iterations, E))
-      {
-        report.status = Constrained_fairing_status::CANCELLED;
+      if(!history.next_iteration(E, callback, report))
         break;
-      }
-      if(history.has_stalled())
-      {
-        report.status = Constrained_fairing_status::CONVERGED;
-        break;
-      }
     }
     report.final_energy = E;
     report.energy_evaluations = m_search.evaluations() + 1 + (newton ? 2 : 1) * report.iterations;

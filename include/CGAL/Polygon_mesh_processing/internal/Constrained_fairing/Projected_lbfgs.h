@@ -8,9 +8,8 @@
 // is stiff along the surface normal and soft along the surface, and far stiffer on small or
 // needle triangles than on the others. Quasi-Newton pairs learn the curvature from the
 // gradients themselves, with no factorization, and cost one energy and gradient evaluation per
-// iteration in the common case where the step 1 is accepted. Their initial matrix scales each
-// vertex by its stiffness along the normal (Bending_energy::value_and_gradient()), recomputed
-// at every iterate: without it, the few stiff vertices dictate the step of all the others.
+// iteration in the common case where the step 1 is accepted. Their initial matrix is the
+// stiffness preconditioner (Stiffness_preconditioner.h), recomputed at every iterate.
 //
 // The pairs are stored in single precision: they only shape the direction, whose descent is
 // checked in double, and they are most of the solver's memory.
@@ -36,6 +35,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_line_search.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Stiffness_preconditioner.h>
 
 #include <array>
 #include <cstddef>
@@ -83,12 +83,12 @@ public:
         break;
       }
       m_active.compute(m_bound, X, m_G);
-      m_Q.noalias() = -m_G;
-      m_active.restrict(m_Q);
       double slope = 0;
       if(m_pairs > 0)
       {
-        apply_inverse_hessian(m_Q, m_D);
+        m_D.noalias() = -m_G;
+        m_active.restrict(m_D);
+        apply_inverse_hessian(m_D);
         m_active.restrict(m_D);
         limit_to_reach(m_D);
         slope = dot(m_D, m_G, m_partial);
@@ -96,9 +96,9 @@ public:
       if(m_pairs == 0 || !(slope < 0))
       {
         m_pairs = 0;
-        m_Q.noalias() = -m_G;
-        m_active.restrict(m_Q);
-        precondition(m_Q, m_D);
+        m_D.noalias() = -m_G;
+        m_active.restrict(m_D);
+        precondition(m_D, m_D);
         m_D *= t_gradient;
         limit_to_reach(m_D);
         slope = dot(m_D, m_G, m_partial);
@@ -125,19 +125,8 @@ public:
       m_G.swap(m_G_next);
       m_scales.swap(m_scales_next);
       E = accepted.energy;
-      history.push(E);
-      ++report.iterations;
-
-      if(!callback(report.iterations, E))
-      {
-        report.status = Constrained_fairing_status::CANCELLED;
+      if(!history.next_iteration(E, callback, report))
         break;
-      }
-      if(history.has_stalled())
-      {
-        report.status = Constrained_fairing_status::CONVERGED;
-        break;
-      }
     }
     report.final_energy = E;
     report.energy_evaluations = m_search.evaluations() + 1;
@@ -161,19 +150,10 @@ private:
     });
   }
 
-  // D = K^-1 R, vertex by vertex (a vertex with no stiffness is in no hinge: it stays)
   template <typename R>
   void precondition(const R& r, Points& D) const
   {
-    D.resize(r.rows(), 3);
-    parallel_for_blocks(static_cast<std::size_t>(r.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const double k = m_scales.stiffness[static_cast<Eigen::Index>(i)];
-        const auto row = static_cast<Eigen::Index>(i);
-        D.row(row) = k > 0 ? Eigen::RowVector3d(r.row(row).template cast<double>() / k) : Eigen::RowVector3d::Zero();
-      }
-    });
+    apply_inverse_stiffness(m_scales, r, D);
   }
 
   // Stores s = x_next - x and y = g_next - g if their curvature s.y is positive (else the
@@ -196,19 +176,18 @@ private:
       ++m_pairs;
   }
 
-  // D = H Q by the two-loop recursion, H0 = gamma K^-1 with gamma = s.y / (y.K^-1 y) for the
-  // newest pair (Q is overwritten).
-  void apply_inverse_hessian(Points& Q, Points& D)
+  // D = H D in place by the two-loop recursion, H0 = gamma K^-1 with gamma = s.y / (y.K^-1 y)
+  // for the newest pair.
+  void apply_inverse_hessian(Points& D)
   {
     for(std::size_t k = 0; k < m_pairs; ++k) // newest to oldest
     {
       const std::size_t j = (m_newest + memory - k) % memory;
-      m_alpha[j] = m_rho[j] * dot(m_s[j], Q, m_partial);
-      add_scaled(Q, -m_alpha[j], m_y[j]);
+      m_alpha[j] = m_rho[j] * dot(m_s[j], D, m_partial);
+      add_scaled(D, -m_alpha[j], m_y[j]);
     }
-    precondition(m_y[m_newest], D);
-    const double gamma = 1 / (m_rho[m_newest] * dot(m_y[m_newest], D, m_partial));
-    precondition(Q, D);
+    const double gamma = 1 / (m_rho[m_newest] * inverse_stiffness_norm2(m_scales, m_y[m_newest], m_partial));
+    precondition(D, D);
     D *= gamma;
     for(std::size_t k = m_pairs; k-- > 0;) // oldest to newest
     {
@@ -222,8 +201,8 @@ private:
   Bending_energy& m_energy;
   Active_set<Bound> m_active;
   Projected_line_search m_search;
-  // gradient, direction, work buffer, next point and its gradient
-  Points m_G, m_D, m_Q, m_X, m_G_next;
+  // gradient, direction, next point and its gradient
+  Points m_G, m_D, m_X, m_G_next;
   Vertex_scales m_scales, m_scales_next; // at the iterate and at the next point
   std::array<Float_points, memory> m_s, m_y;
   std::array<double, memory> m_rho{}, m_alpha{};

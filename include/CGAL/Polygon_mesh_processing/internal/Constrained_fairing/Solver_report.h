@@ -55,6 +55,26 @@ public:
 
   void push(double energy) { m_energies.push_back(energy); }
 
+  // Counts an iteration that reached `energy`, tells the callback, and returns false, with
+  // the status set, when the run stops there: cancelled by the callback, or stalled.
+  template <typename Callback>
+  bool next_iteration(double energy, const Callback& callback, Solver_report& report)
+  {
+    push(energy);
+    ++report.iterations;
+    if(!callback(report.iterations, energy))
+    {
+      report.status = Constrained_fairing_status::CANCELLED;
+      return false;
+    }
+    if(has_stalled())
+    {
+      report.status = Constrained_fairing_status::CONVERGED;
+      return false;
+    }
+    return true;
+  }
+
   bool has_stalled() const
   {
     if(m_energies.size() <= m_window)

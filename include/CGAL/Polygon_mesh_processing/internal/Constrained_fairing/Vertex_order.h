@@ -5,7 +5,7 @@
 // positions (CGAL::hilbert_sort). Every evaluation of the energy visits each triangle and
 // hinge with its vertices; in the order of a file, neighbours are often far apart in memory,
 // and on meshes of a million triangles the evaluation then waits on the memory more than it
-// computes (three times longer than in the Hilbert order at 1.2 M triangles). The order
+// computes (benchmark/fairing_scaling measures the evaluation). The order
 // depends only on the positions and their order in `vertices(tmesh)`, so results stay
 // bit-identical run to run and across mesh data structures.
 
