@@ -1,8 +1,8 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The named parameters of constrained_fairing(): the paper's box bound, a tighter stopping
-// threshold, an iteration cap, a progress callback and a sparse solver of one's choice.
+// The named parameters of constrained_fairing(): the paper's box bound, an iteration cap, a
+// progress callback, and the paper's Newton method with a sparse solver of one's choice.
 //
 //   constrained_fairing_parameters_example [IN] [EPS]
 
