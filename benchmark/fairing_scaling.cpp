@@ -6,9 +6,9 @@
 //
 //   fairing_scaling [MESH] [--level L] [--runs N]
 //
-// MESH (default: the bundled bunny, data/bunny00.off) is Loop
-// subdivided L times (default 1) and given seeded noise of 0.25 h; epsilon = 0.25 h. Reports,
-// all measured in this process, medians of N runs (default 3):
+// MESH (default: the bundled bunny, data/bunny00.off) is Loop subdivided L times (default 1)
+// and given seeded noise of 0.25 h; epsilon = 0.25 h. Reports, all measured in this process,
+// medians of N runs (default 3):
 //  - the default call as a user makes it: time, iterations, energy evaluations, energy;
 //  - the peak resident memory of the whole process during the first call (the mesh included),
 //    in bytes per triangle;

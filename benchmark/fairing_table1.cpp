@@ -6,9 +6,8 @@
 //   fairing_table1 [MESH] [--levels 0,1,2] [--eps 0.25,1] [--iterations 500] [--time-limit S]
 //                  [--traces DIR] [--runs N]
 //
-// MESH (default: the bundled bunny, data/bunny00.off) is
-// Loop subdivided 0, 1 and 2 times and given seeded noise of 0.25 h; each case is faired at
-// epsilon = 0.25 h and 1.0 h. Each method (the default quasi-Newton method, the paper's
+// MESH (default: the bundled bunny, data/bunny00.off) is Loop subdivided 0, 1 and 2 times and
+// given seeded noise of 0.25 h; each case is faired at epsilon = 0.25 h and 1.0 h. Each method (the default quasi-Newton method, the paper's
 // active set Newton method with CHOLMOD when available, and the explicit projected gradient
 // method) runs with no stopping rule for 500 iterations (or until the time limit), recording
 // its energy after each iteration. E* is the lowest energy any of them reached. For each
