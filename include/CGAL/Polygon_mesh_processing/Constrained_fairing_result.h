@@ -49,6 +49,11 @@ struct Constrained_fairing_result
   double final_energy = 0;
   /// the largest Euclidean distance of an output vertex to its input position
   double max_deviation = 0;
+  /// the vertices that could move and ended on the boundary of their ball or box
+  std::size_t number_of_vertices_at_bound = 0;
+  /// the vertices that did not move because they are fixed (`vertex_is_constrained_map`, a
+  /// tolerance of 0) or, for a face range, outside it or on its border
+  std::size_t number_of_fixed_vertices = 0;
   /// the interior edges left out of the energy because one of their two triangles is
   /// degenerate (of nearly zero area) in the input
   std::size_t number_of_degenerate_edges = 0;

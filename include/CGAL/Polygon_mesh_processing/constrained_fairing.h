@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_lbfgs.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_order.h>
 
 #include <CGAL/Eigen_solver_traits.h>
@@ -19,15 +20,20 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/property_map.h>
 
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -68,6 +74,246 @@ inline Solver_options default_options(Constrained_fairing_method method)
   return options;
 }
 
+// The part of `tmesh` that takes part in a call: its vertices (in the order `vertices(tmesh)`
+// lists them), those of them that stay, the triangles whose hinges may count, and which
+// hinges do. With no face range: the whole mesh, every vertex free and every hinge counted.
+// With a face range R: a vertex moves when all its faces are in R; the triangles are R and its
+// neighbours across an edge, and a hinge counts when one of its four vertices moves.
+template <typename TriangleMesh>
+struct Fairing_part
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+  std::vector<vertex_descriptor> vertex;
+  std::vector<std::size_t> number; // the vertices' positions in vertices(tmesh)
+  std::vector<bool> fixed;
+  std::vector<face_descriptor> triangle;
+
+  // The whole mesh.
+  template <typename IsConstrained>
+  Fairing_part(const TriangleMesh& tmesh, const IsConstrained& is_constrained)
+  {
+    std::size_t k = 0;
+    for(auto v : vertices(tmesh))
+    {
+      vertex.push_back(v);
+      number.push_back(k++);
+      fixed.push_back(get(is_constrained, v));
+    }
+  }
+
+  // A face range; `vertex_index` numbers the vertices in the order of vertices(tmesh).
+  template <typename FaceRange, typename VertexIndexMap, typename IsConstrained>
+  Fairing_part(const FaceRange& region, const TriangleMesh& tmesh, const VertexIndexMap& vertex_index,
+               const IsConstrained& is_constrained)
+  {
+    auto in_region = get(CGAL::dynamic_face_property_t<bool>(), tmesh);
+    auto in_part = get(CGAL::dynamic_face_property_t<bool>(), tmesh);
+    for(auto f : faces(tmesh))
+    {
+      put(in_region, f, false);
+      put(in_part, f, false);
+    }
+    for(auto f : region)
+      put(in_region, f, true);
+    for(auto f : region)
+      for(auto h : halfedges_around_face(halfedge(f, tmesh), tmesh))
+        for(auto g : {face(h, tmesh), face(opposite(h, tmesh), tmesh)})
+          if(g != boost::graph_traits<TriangleMesh>::null_face() && !get(in_part, g))
+          {
+            put(in_part, g, true);
+            triangle.push_back(g);
+          }
+    auto taken = get(CGAL::dynamic_vertex_property_t<bool>(), tmesh);
+    for(auto v : vertices(tmesh))
+      put(taken, v, false);
+    for(auto f : triangle)
+      for(auto v : vertices_around_face(halfedge(f, tmesh), tmesh))
+        put(taken, v, true);
+    for(auto v : vertices(tmesh))
+    {
+      if(!get(taken, v))
+        continue;
+      bool moves = !get(is_constrained, v);
+      for(auto f : faces_around_target(halfedge(v, tmesh), tmesh))
+        moves = moves && (f == boost::graph_traits<TriangleMesh>::null_face() || get(in_region, f));
+      vertex.push_back(v);
+      number.push_back(get(vertex_index, v));
+      fixed.push_back(!moves);
+    }
+  }
+};
+
+template <typename TriangleMesh, typename FaceRange, typename NamedParameters>
+Constrained_fairing_result constrained_fairing(const FaceRange* region, TriangleMesh& tmesh, double epsilon,
+                                               const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  using Point_3 = typename GT::Point_3;
+  using Sparse_linear_solver =
+    typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t, NamedParameters,
+                                                 Default_sparse_linear_solver>::type;
+
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, tmesh));
+  const auto is_constrained = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                                               CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+  const Constrained_fairing_method method =
+    choose_parameter(get_parameter(np, fairing_method), Constrained_fairing_method::QUASI_NEWTON);
+  Solver_options options = default_options(method);
+  options.max_iterations = static_cast<std::size_t>(
+    choose_parameter(get_parameter(np, internal_np::number_of_iterations), options.max_iterations));
+  options.threshold = choose_parameter(get_parameter(np, energy_decrease_threshold), options.threshold);
+  options.cg_iterations = (std::max)(std::size_t(1), static_cast<std::size_t>(choose_parameter(
+    get_parameter(np, conjugate_gradient_iterations), options.cg_iterations)));
+  const auto callback = choose_parameter(get_parameter(np, iteration_callback), Always_continue());
+  const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
+  CGAL_precondition(options.threshold >= 0);
+
+  Constrained_fairing_result result;
+  if(num_vertices(tmesh) == 0)
+  {
+    result.message = "the mesh is empty";
+    return result;
+  }
+
+  // Messages number the vertices in the order `vertices(tmesh)` lists them.
+  auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh);
+  std::size_t count = 0;
+  for(auto v : vertices(tmesh))
+    put(vertex_index, v, count++);
+  result.message = connectivity_error(tmesh, vertex_index);
+  if(result.message.empty())
+    result.message = size_error(tmesh);
+  if(!result.message.empty())
+    return result;
+
+  const Fairing_part<TriangleMesh> part =
+    region ? Fairing_part<TriangleMesh>(*region, tmesh, vertex_index, is_constrained)
+           : Fairing_part<TriangleMesh>(tmesh, is_constrained);
+  const std::size_t n = part.vertex.size();
+  Points X0(static_cast<Eigen::Index>(n), 3);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const Point_3& p = get(vpm, part.vertex[k]);
+    point(X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  result.message = coordinates_error(X0, part.number);
+  if(result.message.empty())
+    result.message = epsilon_error(epsilon);
+  Vertex_bounds bounds;
+  if(result.message.empty())
+    result.message = bounds.read<TriangleMesh>(part.vertex, part.fixed, part.number, epsilon, np);
+  if(!result.message.empty())
+    return result;
+
+  // From here on, the vertices are stored in the Hilbert order of their input positions.
+  const std::vector<Index> rank = hilbert_rank(X0);
+  {
+    Points sorted(X0.rows(), 3);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      point(sorted, rank[k]) = point(X0, k);
+      put(vertex_index, part.vertex[k], std::size_t(rank[k]));
+    }
+    X0.swap(sorted);
+    bounds.permute(rank);
+  }
+  std::vector<bool> moving(n);
+  for(std::size_t k = 0; k < n; ++k)
+    moving[rank[k]] = !part.fixed[k];
+  result.number_of_fixed_vertices = static_cast<std::size_t>(std::count(moving.begin(), moving.end(), false));
+  const Hinge_mesh mesh =
+    region ? Hinge_mesh(tmesh, part.triangle, n, vertex_index,
+                        [&](const std::array<Index, 4>& v) {
+                          return moving[v[0]] || moving[v[1]] || moving[v[2]] || moving[v[3]];
+                        })
+           : Hinge_mesh(tmesh, vertex_index);
+  Bending_energy energy(mesh, X0);
+  if(!energy.is_defined())
+  {
+    result.message = "all triangles of the mesh have zero area";
+    return result;
+  }
+
+  // Each vertex's deviation and whether it is at its bound, for the outputs.
+  std::vector<double> deviation(n, 0.);
+  std::vector<bool> at_bound(n, false);
+  Points X = X0;
+  const auto run = [&](const auto& bound) {
+    const std::size_t outside = bound.first_outside(X0);
+    if(outside < n)
+    {
+      result.status = Constrained_fairing_status::INVALID_INPUT;
+      for(std::size_t k = 0; k < n; ++k)
+        if(rank[k] == outside)
+          result.message = "vertex " + std::to_string(part.number[k]) + " lies outside its box";
+      return;
+    }
+    result.initial_energy = result.final_energy = energy.value(X0);
+    result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
+    result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+    if(options.max_iterations > 0)
+    {
+      const Solver_report report = fair(mesh, bound, energy, method, options, solver, callback, X);
+      result.status = report.status;
+      result.message = report.message;
+      result.number_of_iterations = report.iterations;
+      result.number_of_cg_iterations = report.cg_iterations;
+      result.number_of_energy_evaluations = report.energy_evaluations;
+      if(!result)
+        return;
+      result.final_energy = report.final_energy;
+    }
+    result.max_deviation = bound.max_deviation(X);
+    typename std::decay_t<decltype(bound)>::Face face;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      deviation[i] = bound.deviation(X, i);
+      at_bound[i] = moving[i] && bounds.tolerance(i) > 0 && bound.is_on_boundary(X, i, face);
+      result.number_of_vertices_at_bound += at_bound[i];
+    }
+  };
+  if(bounds.is_box())
+    run(bounds.box(X0));
+  else
+    run(bounds.ball(X0));
+  if(!result)
+    return result;
+
+  // Only moved vertices are written: the others keep their coordinates exactly, even in an
+  // exact kernel.
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t i = rank[k];
+    if(point(X, i) != point(X0, i))
+      put(vpm, part.vertex[k], Point_3(X(i, 0), X(i, 1), X(i, 2)));
+  }
+  if constexpr(!is_default_parameter<NamedParameters, vertex_deviation_map_t>::value)
+  {
+    const auto deviation_map = get_parameter(np, vertex_deviation_map);
+    for(auto v : vertices(tmesh))
+      put(deviation_map, v, 0);
+    for(std::size_t k = 0; k < n; ++k)
+      put(deviation_map, part.vertex[k], deviation[rank[k]]);
+  }
+  if constexpr(!is_default_parameter<NamedParameters, vertex_at_bound_map_t>::value)
+  {
+    const auto at_bound_map = get_parameter(np, vertex_at_bound_map);
+    for(auto v : vertices(tmesh))
+      put(at_bound_map, v, false);
+    for(std::size_t k = 0; k < n; ++k)
+      put(at_bound_map, part.vertex[k], bool(at_bound[rank[k]]));
+  }
+  return result;
+}
+
 } // namespace Constrained_fairing
 } // namespace internal
 
@@ -87,10 +333,24 @@ accuracy of the data (a scanner's precision, the voxel size of an isosurface) ke
 accuracy. More iterations can only lower the energy. The connectivity is not changed; border
 vertices move like the others, and border edges do not contribute to the energy.
 
+<b>Tolerances.</b> `epsilon` is the tolerance of every vertex and caps all the others:
+- `vertex_tolerance_map` gives each vertex its own tolerance `t(v)`, and the vertex then stays
+  within `min(epsilon, t(v))` (a scanner's accuracy varies with range and incidence angle). A
+  tolerance of `0` pins the vertex.
+- `vertex_is_constrained_map` fixes vertices: they do not move at all (their coordinates are
+  not even written), and the hinges around them still count in the energy.
+- The box bound (`deviation_bound(Deviation_bound::BOX)`, or any of the box parameters below)
+  keeps each coordinate within `min(epsilon, t(v))` of its input value, or within the box's own
+  half-extents along x, y and z (`box_half_extents` for all vertices, `vertex_box_half_extents_map`
+  per vertex), each also capped by `min(epsilon, t(v))`. The box is centred at the input
+  position, or at `vertex_box_center_map(v)`: the voxel cell of a vertex extracted from a volume,
+  which may sit anywhere in it. The input position must lie in its box. The largest move is then
+  the box's diagonal, not `epsilon`.
+
 The bound holds in double arithmetic with no tolerance: computed from the output and input
-points as doubles, `squared_distance(p, p0) <= epsilon * epsilon` and
-`sqrt(squared_distance(p, p0)) <= epsilon` (ball), or `|p.x() - p0.x()| <= epsilon` and
-likewise for `y` and `z` (box).
+points as doubles, with `r` the vertex's radius, `squared_distance(p, p0) <= r * r` and
+`sqrt(squared_distance(p, p0)) <= r` (ball), or `|p.x() - c.x()| <= h_x` and likewise for `y`
+and `z` (box, `c` its centre and `h` its half-extents).
 
 The iterations stop when the energy decreased by less than `energy_decrease_threshold` per
 iteration relatively, on average over the last 50 iterations (quasi-Newton method) or the last
@@ -116,6 +376,10 @@ The checks, in the order they are made:
 - more than 2^32 - 1 vertices or 1,431,655,765 faces;
 - a NaN or infinite coordinate;
 - `epsilon` negative, zero, NaN or infinite;
+- a per-vertex tolerance or box half-extent negative, NaN or infinite, or a box centre with a
+  NaN or infinite coordinate (for the vertices that may move);
+- box parameters with `deviation_bound(Deviation_bound::BALL)`;
+- an input position outside its box;
 - all triangles of zero area.
 
 Isolated vertices are allowed and do not move. Degenerate triangles are allowed: the hinges
@@ -179,7 +443,45 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDescription{the shape of the set each vertex stays in: the ball of radius
                           `epsilon`, or the paper's box of side `2 epsilon`}
     \cgalParamType{`CGAL::Polygon_mesh_processing::Deviation_bound`}
-    \cgalParamDefault{`Deviation_bound::BALL`}
+    \cgalParamDefault{`Deviation_bound::BOX` if a box parameter is given, `Deviation_bound::BALL` otherwise}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_tolerance_map}
+    \cgalParamDescription{each vertex's own tolerance (radius of its ball, half-side of its box),
+                          capped by `epsilon`; `0` pins the vertex}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a
+                   number type as value type}
+    \cgalParamDefault{`epsilon` for every vertex}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{the vertices that must not move}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `bool`
+                   as value type}
+    \cgalParamDefault{no vertex is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{box_half_extents}
+    \cgalParamDescription{the half-extents along x, y and z of every vertex's box (a voxel's half
+                          size), each capped by the vertex's tolerance; selects the box bound}
+    \cgalParamType{`std::array<double, 3>`}
+    \cgalParamDefault{the vertex's tolerance along each axis}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_box_half_extents_map}
+    \cgalParamDescription{each vertex's box half-extents along x, y and z, each capped by the
+                          vertex's tolerance; selects the box bound}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a
+                   value type `h` with `h[0]`, `h[1]`, `h[2]` numbers (`std::array<double, 3>`,
+                   a %CGAL `Vector_3`)}
+    \cgalParamDefault{`box_half_extents`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_box_center_map}
+    \cgalParamDescription{each vertex's box centre (ignored for a vertex of tolerance `0`, which
+                          stays where it is); selects the box bound}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
+                   `%Point_3` as value type}
+    \cgalParamDefault{the vertex's input position}
   \cgalParamNEnd
   \cgalParamNBegin{fairing_method}
     \cgalParamDescription{the optimization method}
@@ -208,10 +510,28 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamType{a callable `bool(std::size_t, double)`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{vertex_deviation_map}
+    \cgalParamDescription{receives each vertex's distance to its input position (`0` for the
+                          vertices that take no part); written when the call succeeds}
+    \cgalParamType{a class model of `WritablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a
+                   floating point type as value type}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_at_bound_map}
+    \cgalParamDescription{receives whether each vertex that could move ended on the boundary of
+                          its ball or box (`false` for fixed vertices); written when the call
+                          succeeds}
+    \cgalParamType{a class model of `WritablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `bool`
+                   as value type}
+    \cgalParamDefault{unused}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \return a `Constrained_fairing_result`: the status, the iterations and energy evaluations, the
-        energy before and after, the largest deviation reached, and on failure the reason.
+        energy before and after, the largest deviation reached, the vertices at their bound and
+        the fixed ones, and on failure the reason.
 
 \warning The computation is done in double precision, and so is the guarantee.
 */
@@ -220,118 +540,42 @@ template <typename TriangleMesh,
 Constrained_fairing_result constrained_fairing(TriangleMesh& tmesh, double epsilon,
                                                const NamedParameters& np = parameters::default_values())
 {
-  namespace CF = internal::Constrained_fairing;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using Faces = std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>;
+  return internal::Constrained_fairing::constrained_fairing(static_cast<const Faces*>(nullptr), tmesh, epsilon, np);
+}
 
-  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  using Point_3 = typename GT::Point_3;
-  using Sparse_linear_solver =
-    typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t, NamedParameters,
-                                                 CF::Default_sparse_linear_solver>::type;
+/*!
+\ingroup PkgConstrainedFairingRef
 
-  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                              get_property_map(CGAL::vertex_point, tmesh));
-  const Constrained_fairing_method method =
-    choose_parameter(get_parameter(np, CF::fairing_method), Constrained_fairing_method::QUASI_NEWTON);
-  CF::Solver_options options = CF::default_options(method);
-  options.max_iterations = static_cast<std::size_t>(
-    choose_parameter(get_parameter(np, internal_np::number_of_iterations), options.max_iterations));
-  options.threshold = choose_parameter(get_parameter(np, CF::energy_decrease_threshold), options.threshold);
-  options.cg_iterations = (std::max)(std::size_t(1), static_cast<std::size_t>(choose_parameter(
-    get_parameter(np, CF::conjugate_gradient_iterations), options.cg_iterations)));
-  const Deviation_bound shape = choose_parameter(get_parameter(np, CF::deviation_bound), Deviation_bound::BALL);
-  const auto callback = choose_parameter(get_parameter(np, CF::iteration_callback), CF::Always_continue());
-  const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
-  CGAL_precondition(options.threshold >= 0);
+\brief fairs the part of a triangle mesh made of the faces `face_range`, everything else
+staying bit-identical.
 
-  Constrained_fairing_result result;
-  if(num_vertices(tmesh) == 0)
-  {
-    result.message = "the mesh is empty";
-    return result;
-  }
+As `constrained_fairing(tmesh, epsilon, np)`, with the same named parameters, but only the
+vertices whose faces all lie in `face_range` move: the vertices on the border of the region
+stay, and so does every vertex outside it. The energy is the sum over the hinges that touch a
+moving vertex (as an edge end or an opposite vertex), so that the result meets the rest of the
+mesh smoothly. Calling it with `faces(tmesh)` is the same as fairing the whole mesh. The whole
+mesh is checked as for the other overload; vertices are numbered in messages as there.
 
-  // Vertices are numbered in the order `vertices(tmesh)` lists them.
-  auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh);
-  std::size_t n = 0;
-  for(auto v : vertices(tmesh))
-    put(vertex_index, v, n++);
-  result.message = CF::connectivity_error(tmesh, vertex_index);
-  if(result.message.empty())
-    result.message = CF::size_error(tmesh);
-  if(!result.message.empty())
-    return result;
+\tparam FaceRange a model of `ConstRange` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+        as value type
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
-  CF::Points X0(static_cast<Eigen::Index>(n), 3);
-  for(auto v : vertices(tmesh))
-  {
-    const Point_3& p = get(vpm, v);
-    X0.row(static_cast<Eigen::Index>(get(vertex_index, v))) << CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-      CGAL::to_double(p.z());
-  }
-  result.message = CF::coordinates_error(X0);
-  if(result.message.empty())
-    result.message = CF::epsilon_error(epsilon);
-  if(!result.message.empty())
-    return result;
+\param face_range the faces of the region, each listed once
+\param tmesh a triangle mesh, manifold and consistently oriented, possibly with borders
+\param epsilon the largest distance a vertex may move, in the mesh's units
+\param np the named parameters of `constrained_fairing(tmesh, epsilon, np)`
 
-  // From here on, the vertices are stored in the Hilbert order of their input positions.
-  {
-    const std::vector<CF::Index> rank = CF::hilbert_rank(X0);
-    CF::Points sorted(X0.rows(), 3);
-    for(auto v : vertices(tmesh))
-    {
-      const std::size_t i = get(vertex_index, v);
-      sorted.row(rank[i]) = X0.row(static_cast<Eigen::Index>(i));
-      put(vertex_index, v, std::size_t(rank[i]));
-    }
-    X0.swap(sorted);
-  }
-  const CF::Hinge_mesh mesh(tmesh, vertex_index);
-  CF::Bending_energy energy(mesh, X0);
-  if(!energy.is_defined())
-  {
-    result.message = "all triangles of the mesh have zero area";
-    return result;
-  }
-  result.initial_energy = result.final_energy = energy.value(X0);
-  result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
-  result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
-  if(options.max_iterations == 0)
-    return result;
-
-  CF::Points X = X0;
-  CF::Solver_report report;
-  if(shape == Deviation_bound::BALL)
-  {
-    const CF::Ball_bound bound(X0, epsilon);
-    report = CF::fair(mesh, bound, energy, method, options, solver, callback, X);
-    result.max_deviation = bound.max_deviation(X);
-  }
-  else
-  {
-    const CF::Box_bound bound(X0, epsilon);
-    report = CF::fair(mesh, bound, energy, method, options, solver, callback, X);
-    result.max_deviation = bound.max_deviation(X);
-  }
-  result.status = report.status;
-  result.message = report.message;
-  result.number_of_iterations = report.iterations;
-  result.number_of_cg_iterations = report.cg_iterations;
-  result.number_of_energy_evaluations = report.energy_evaluations;
-  if(!result)
-  {
-    result.max_deviation = 0;
-    return result;
-  }
-  result.final_energy = report.final_energy;
-  for(auto v : vertices(tmesh))
-  {
-    const auto i = static_cast<std::size_t>(get(vertex_index, v));
-    put(vpm, v, Point_3(X(i, 0), X(i, 1), X(i, 2)));
-  }
-  return result;
+\return a `Constrained_fairing_result`, whose energies are those of the hinges that count and
+        whose fixed vertices include the region's border and its neighbours.
+*/
+template <typename FaceRange, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+Constrained_fairing_result constrained_fairing(const FaceRange& face_range, TriangleMesh& tmesh, double epsilon,
+                                               const NamedParameters& np = parameters::default_values())
+{
+  return internal::Constrained_fairing::constrained_fairing(&face_range, tmesh, epsilon, np);
 }
 
 } // namespace Polygon_mesh_processing

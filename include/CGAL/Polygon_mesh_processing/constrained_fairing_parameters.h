@@ -46,6 +46,12 @@ enum fairing_method_t { fairing_method };
 enum energy_decrease_threshold_t { energy_decrease_threshold };
 enum conjugate_gradient_iterations_t { conjugate_gradient_iterations };
 enum iteration_callback_t { iteration_callback };
+enum vertex_tolerance_map_t { vertex_tolerance_map };
+enum box_half_extents_t { box_half_extents };
+enum vertex_box_half_extents_map_t { vertex_box_half_extents_map };
+enum vertex_box_center_map_t { vertex_box_center_map };
+enum vertex_deviation_map_t { vertex_deviation_map };
+enum vertex_at_bound_map_t { vertex_at_bound_map };
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -85,6 +91,18 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(energy_decrease_threshold)
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(conjugate_gradient_iterations)
 /// a callable `bool(std::size_t iteration, double energy)`, called after each iteration
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(iteration_callback)
+/// a readable property map from vertices to numbers: each vertex's own tolerance
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_tolerance_map)
+/// the half-extents of every vertex's box along x, y and z, a `std::array<double, 3>`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(box_half_extents)
+/// a readable property map from vertices to their box's half-extents (three numbers)
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_box_half_extents_map)
+/// a readable property map from vertices to their box's centre (a point)
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_box_center_map)
+/// a writable property map from vertices to numbers: each vertex's distance to its input position
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_deviation_map)
+/// a writable property map from vertices to `bool`: whether the vertex ended on its bound
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_at_bound_map)
 
 #undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
 

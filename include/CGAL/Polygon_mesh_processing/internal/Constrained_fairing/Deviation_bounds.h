@@ -1,11 +1,13 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The feasible set Omega, a product of one small set per vertex around its input position:
-// the ball of radius epsilon, or the paper's box of side 2 epsilon. The solvers are templated
-// on the bound, so no per-vertex loop branches on its shape. The bound is a promise to the
-// user, so membership is decided the way a user checks it, in double arithmetic with no
-// tolerance, and every projection lands inside by that test.
+// The feasible set Omega, a product of one small set per vertex: the ball of radius r_i
+// around its input position, or an axis-aligned box of half-extents (h_x, h_y, h_z)_i around
+// its input position or around a centre of its own (a voxel cell). Each vertex has its own
+// size; a size 0 pins the vertex. The solvers are templated on the bound, so no per-vertex
+// loop branches on its shape. The bound is a promise to the user, so membership is decided
+// the way a user checks it, in double arithmetic with no tolerance, and every projection
+// lands inside by that test.
 //
 // Each bound also says which face of its set a vertex is on (its sphere, or the sides of its
 // box it touches), and restricts a displacement to that face; Active_set.h collects them.
@@ -18,7 +20,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -42,14 +47,34 @@ inline double robust_norm(const Eigen::Vector3d& d)
   return (r > 0 && r < std::numeric_limits<double>::infinity()) ? r : d.stableNorm();
 }
 
-// What the bounds share: the input points, epsilon, and the loops over all vertices.
+// A size per vertex: one value for all of them, or one each.
+class Vertex_sizes
+{
+public:
+  explicit Vertex_sizes(double uniform) : m_uniform(uniform) {}
+  explicit Vertex_sizes(std::vector<double> per_vertex) : m_uniform(0), m_per_vertex(std::move(per_vertex)) {}
+
+  double operator[](std::size_t i) const { return m_per_vertex.empty() ? m_uniform : m_per_vertex[i]; }
+
+  double largest() const
+  {
+    return m_per_vertex.empty() ? m_uniform : *std::max_element(m_per_vertex.begin(), m_per_vertex.end());
+  }
+
+private:
+  double m_uniform;
+  std::vector<double> m_per_vertex;
+};
+
+// What the bounds share: the input points, the largest size, and the loops over all vertices.
 template <typename Bound>
 class Deviation_bound_base
 {
 public:
-  Deviation_bound_base(const Points& X0, double eps) : m_X0(X0), m_eps(eps) {}
+  Deviation_bound_base(const Points& X0, double largest) : m_X0(X0), m_largest(largest) {}
 
-  double epsilon() const { return m_eps; }
+  // The largest distance a vertex may move along one axis (the solvers' first step).
+  double epsilon() const { return m_largest; }
   const Points& input_points() const { return m_X0; }
 
   // X = P(X), the closest point of Omega (up to the last bit, which is chosen inwards)
@@ -61,6 +86,18 @@ public:
     });
   }
 
+  // The first vertex of X outside its set, or X.rows() if none.
+  std::size_t first_outside(const Points& X) const
+  {
+    for(std::size_t i = 0; i < static_cast<std::size_t>(X.rows()); ++i)
+      if(!static_cast<const Bound&>(*this).contains(X, i))
+        return i;
+    return static_cast<std::size_t>(X.rows());
+  }
+
+  // |x_i - x0_i|
+  double deviation(const Points& X, std::size_t i) const { return (point(X, i) - point(m_X0, i)).norm(); }
+
   // The largest Euclidean distance |x_i - x0_i| over all vertices.
   double max_deviation(const Points& X) const
   {
@@ -71,30 +108,34 @@ public:
   }
 
 protected:
-  // The rounding error of vertex i's coordinates.
-  double rounding_error(std::size_t i) const
+  // The rounding error of vertex i's coordinates, whose set has size `size`.
+  double rounding_error(std::size_t i, double size) const
   {
-    return (std::max)(std::numeric_limits<double>::epsilon() * (point(m_X0, i).template lpNorm<Eigen::Infinity>() + m_eps),
+    return (std::max)(std::numeric_limits<double>::epsilon() * (point(m_X0, i).template lpNorm<Eigen::Infinity>() + size),
                       std::numeric_limits<double>::denorm_min());
   }
 
   const Points& m_X0;
-  double m_eps;
+  double m_largest;
 };
 
-// |p - p0| <= epsilon
+// |p_i - p0_i| <= r_i
 class Ball_bound : public Deviation_bound_base<Ball_bound>
 {
 public:
-  // A vertex on its sphere: the outward unit normal there (zero when epsilon is below the
+  // A vertex on its sphere: the outward unit normal there (zero when r_i is below the
   // rounding error of the coordinates, and the vertex cannot move at all).
   using Face = Eigen::Vector3d;
 
-  Ball_bound(const Points& X0, double eps) : Deviation_bound_base<Ball_bound>(X0, eps) {}
+  Ball_bound(const Points& X0, double eps) : Ball_bound(X0, Vertex_sizes(eps)) {}
+  Ball_bound(const Points& X0, Vertex_sizes radius)
+    : Deviation_bound_base<Ball_bound>(X0, radius.largest()), m_radius(std::move(radius))
+  {
+  }
 
   bool contains(const Points& X, std::size_t i) const
   {
-    return is_in_ball(X.data() + 3 * i, m_X0.data() + 3 * i, m_eps);
+    return is_in_ball(X.data() + 3 * i, m_X0.data() + 3 * i, m_radius[i]);
   }
 
   using Deviation_bound_base<Ball_bound>::project;
@@ -109,11 +150,11 @@ public:
     // outside; aim a little inside then, by a slack that starts at that rounding error. The
     // centre, reached at worst, is inside. An offset that overflows (X must be finite, not
     // X - c) goes to the centre.
-    const double r = robust_norm(d);
+    const double r = robust_norm(d), eps = m_radius[i];
     if(r < std::numeric_limits<double>::infinity())
-      for(double slack = 0; slack < m_eps; slack = (slack == 0) ? rounding_error(i) : 2 * slack)
+      for(double slack = 0; slack < eps; slack = (slack == 0) ? rounding_error(i, eps) : 2 * slack)
       {
-        point(X, i) = c + ((m_eps - slack) / r) * d;
+        point(X, i) = c + ((eps - slack) / r) * d;
         if(contains(X, i))
           return;
       }
@@ -124,8 +165,8 @@ public:
   bool is_on_boundary(const Points& X, std::size_t i, Face& face) const
   {
     const Eigen::Vector3d d = point(X, i) - point(m_X0, i);
-    const double r = robust_norm(d);
-    if(r < m_eps - 8 * rounding_error(i))
+    const double r = robust_norm(d), eps = m_radius[i];
+    if(r < eps - 8 * rounding_error(i, eps))
       return false;
     face = r > 0 ? Eigen::Vector3d(d / r) : Eigen::Vector3d::Zero();
     return true;
@@ -144,29 +185,46 @@ public:
     else
       v -= face.dot(v) * face;
   }
+
+private:
+  Vertex_sizes m_radius;
 };
 
-// |p_k - p0_k| <= epsilon for each coordinate k
+// |p_ik - c_ik| <= h_ik for each coordinate k, c_i the box's centre (by default p0_i)
 class Box_bound : public Deviation_bound_base<Box_bound>
 {
 public:
   // A vertex on its box: the sides it touches, per coordinate -1 (lower), +1 (upper) or 0.
   using Face = Eigen::Vector3i;
 
+  // The cube of half-side eps around each input point.
   Box_bound(const Points& X0, double eps)
-    : Deviation_bound_base<Box_bound>(X0, eps), m_lower(X0.rows(), 3), m_upper(X0.rows(), 3)
+    : Box_bound(X0, [eps](std::size_t) { return Eigen::Vector3d(eps, eps, eps); },
+                [&X0](std::size_t i) { return Eigen::Vector3d(point(X0, i)); })
   {
-    for(Eigen::Index k = 0; k < X0.size(); ++k)
+  }
+
+  // Vertex i's box has half-extents `half_extents(i)` (>= 0) around `centre(i)`, both
+  // Eigen::Vector3d.
+  template <typename HalfExtents, typename Centre>
+  Box_bound(const Points& X0, const HalfExtents& half_extents, const Centre& centre)
+    : Deviation_bound_base<Box_bound>(X0, 0), m_lower(X0.rows(), 3), m_upper(X0.rows(), 3)
+  {
+    for(std::size_t i = 0; i < static_cast<std::size_t>(X0.rows()); ++i)
     {
-      const double c = X0.data()[k];
-      // the closest doubles to c -+ eps whose difference to c, as computed, is <= eps
-      double lo = c - eps, hi = c + eps;
-      while(c - lo > eps)
-        lo = std::nextafter(lo, c);
-      while(hi - c > eps)
-        hi = std::nextafter(hi, c);
-      m_lower.data()[k] = lo;
-      m_upper.data()[k] = hi;
+      const Eigen::Vector3d h = half_extents(i), c = centre(i);
+      m_largest = (std::max)(m_largest, h.maxCoeff());
+      for(int k = 0; k < 3; ++k)
+      {
+        // the closest doubles to c -+ h whose difference to c, as computed, is <= h
+        double lo = c[k] - h[k], hi = c[k] + h[k];
+        while(c[k] - lo > h[k])
+          lo = std::nextafter(lo, c[k]);
+        while(hi - c[k] > h[k])
+          hi = std::nextafter(hi, c[k]);
+        m_lower(Eigen::Index(i), k) = lo;
+        m_upper(Eigen::Index(i), k) = hi;
+      }
     }
   }
 

@@ -50,15 +50,25 @@ struct Hinge_mesh
   // which has fewer than 2^32 vertices and at most `max_faces` faces.
   template <typename TriangleMesh, typename VertexIndexMap>
   Hinge_mesh(const TriangleMesh& tmesh, const VertexIndexMap& vertex_index)
-    : number_of_vertices(static_cast<std::size_t>(num_vertices(tmesh)))
+    : Hinge_mesh(tmesh, faces(tmesh), static_cast<std::size_t>(num_vertices(tmesh)), vertex_index,
+                 [](const std::array<Index, 4>&) { return true; })
+  {
+  }
+
+  // The part of `tmesh` made of the triangles `face_range`, whose vertices `vertex_index` maps
+  // to [0, number_of_vertices); its hinges are the edges between two of these triangles for
+  // which `keep({a, b, c, d})` holds, a and b the edge's ends and c, d the opposite vertices.
+  template <typename TriangleMesh, typename FaceRange, typename VertexIndexMap, typename Keep>
+  Hinge_mesh(const TriangleMesh& tmesh, const FaceRange& face_range, std::size_t number_of_vertices,
+             const VertexIndexMap& vertex_index, const Keep& keep)
+    : number_of_vertices(number_of_vertices)
   {
     using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
     auto id = [&](auto v) { return static_cast<Index>(get(vertex_index, v)); };
 
     // Each triangle starts at its smallest vertex index, orientation kept.
     std::vector<std::pair<std::array<Index, 3>, face_descriptor> > sorted;
-    sorted.reserve(static_cast<std::size_t>(num_faces(tmesh)));
-    for(face_descriptor f : faces(tmesh))
+    for(face_descriptor f : face_range)
     {
       const auto h = halfedge(f, tmesh);
       std::array<Index, 3> t = {id(source(h, tmesh)), id(target(h, tmesh)),
@@ -68,7 +78,10 @@ struct Hinge_mesh
     }
     std::sort(sorted.begin(), sorted.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
+    constexpr Index no_face = ~Index(0);
     auto face_index = get(CGAL::dynamic_face_property_t<Index>(), tmesh);
+    for(face_descriptor f : faces(tmesh))
+      put(face_index, f, no_face);
     triangles.reserve(sorted.size());
     for(const auto& t : sorted)
     {
@@ -76,18 +89,20 @@ struct Hinge_mesh
       triangles.push_back(t.first);
     }
 
-    hinges.reserve(static_cast<std::size_t>(num_edges(tmesh)));
-    for(auto e : edges(tmesh))
-    {
-      auto h = halfedge(e, tmesh);
-      if(is_border(h, tmesh))
-        h = opposite(h, tmesh);
-      if(is_border_edge(h, tmesh))
-        continue;
-      const Index a = id(source(h, tmesh)), b = id(target(h, tmesh));
-      const Index f = get(face_index, face(h, tmesh)), g = get(face_index, face(opposite(h, tmesh), tmesh));
-      hinges.push_back(a < b ? Hinge{{a, b}, {f, g}} : Hinge{{b, a}, {g, f}});
-    }
+    hinges.reserve(3 * sorted.size() / 2);
+    for(const auto& t : sorted)
+      for(auto h : halfedges_around_face(halfedge(t.second, tmesh), tmesh))
+      {
+        const auto o = opposite(h, tmesh);
+        if(is_border(o, tmesh))
+          continue;
+        const Index f = get(face_index, t.second), g = get(face_index, face(o, tmesh));
+        if(g == no_face || g < f)
+          continue;
+        const Index a = id(source(h, tmesh)), b = id(target(h, tmesh));
+        if(keep(std::array<Index, 4>{a, b, id(target(next(h, tmesh), tmesh)), id(target(next(o, tmesh), tmesh))}))
+          hinges.push_back(a < b ? Hinge{{a, b}, {f, g}} : Hinge{{b, a}, {g, f}});
+      }
     std::sort(hinges.begin(), hinges.end(), [](const Hinge& x, const Hinge& y) { return x.v < y.v; });
   }
 };

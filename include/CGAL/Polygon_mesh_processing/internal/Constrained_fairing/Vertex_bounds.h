@@ -1,0 +1,187 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the named parameters ask of each vertex that takes part in the fairing, read and
+// checked before anything is done, then turned into the solver's Ball_bound or Box_bound:
+//  - its tolerance t_i = min(epsilon, vertex_tolerance_map(v)), or 0 for a fixed vertex;
+//  - for the box, its half-extents min(t_i, H_i) per axis, H_i from vertex_box_half_extents_map
+//    or box_half_extents (t_i alone without them), around vertex_box_center_map(v) or the
+//    input position (always the input position for a vertex of tolerance 0, which so stays
+//    where it is).
+// epsilon thus caps every size, and a fixed vertex's coordinates come out bit-identical.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_VERTEX_BOUNDS_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_VERTEX_BOUNDS_H
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+class Vertex_bounds
+{
+public:
+  // The vertices taking part, `fixed[k]` for those that must not move; `number[k]` names
+  // vertex k in messages. Reads the named parameters and returns an error message, or an
+  // empty string if every value is usable.
+  template <typename TriangleMesh, typename NamedParameters>
+  std::string read(const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex,
+                   const std::vector<bool>& fixed, const std::vector<std::size_t>& number, double epsilon,
+                   const NamedParameters& np)
+  {
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+    constexpr bool has_tolerance = !is_default_parameter<NamedParameters, vertex_tolerance_map_t>::value;
+    constexpr bool has_extents = !is_default_parameter<NamedParameters, box_half_extents_t>::value;
+    constexpr bool has_extents_map = !is_default_parameter<NamedParameters, vertex_box_half_extents_map_t>::value;
+    constexpr bool has_centre_map = !is_default_parameter<NamedParameters, vertex_box_center_map_t>::value;
+    constexpr bool box_parameters = has_extents || has_extents_map || has_centre_map;
+
+    const bool box_asked =
+      parameters::choose_parameter(get_parameter(np, deviation_bound), Deviation_bound::BALL) == Deviation_bound::BOX;
+    if(box_parameters && !box_asked && !is_default_parameter<NamedParameters, deviation_bound_t>::value)
+      return "box half-extents or centres were given with the ball bound";
+    m_box = box_asked || box_parameters;
+    m_epsilon = epsilon;
+
+    const std::size_t n = vertex.size();
+    bool any_fixed = false;
+    for(bool f : fixed)
+      any_fixed = any_fixed || f;
+    if(has_tolerance || any_fixed)
+      m_tolerance.assign(n, epsilon);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      if(fixed[k])
+      {
+        m_tolerance[k] = 0;
+        continue;
+      }
+      if constexpr(has_tolerance)
+      {
+        const double t = CGAL::to_double(get(get_parameter(np, vertex_tolerance_map), vertex[k]));
+        if(!(t >= 0) || !std::isfinite(t))
+          return "vertex " + std::to_string(number[k]) + " has a negative, NaN or infinite tolerance (" + std::to_string(t) + ")";
+        m_tolerance[k] = (std::min)(t, epsilon);
+      }
+    }
+
+    m_uniform_extents = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    if constexpr(has_extents)
+    {
+      const std::array<double, 3> h = get_parameter(np, box_half_extents);
+      for(int c = 0; c < 3; ++c)
+        m_uniform_extents[c] = h[std::size_t(c)];
+      if(!extents_error(m_uniform_extents).empty())
+        return "box_half_extents " + extents_error(m_uniform_extents);
+    }
+    if constexpr(has_extents_map)
+    {
+      m_extents.resize(Eigen::Index(n), 3);
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const auto& h = get(get_parameter(np, vertex_box_half_extents_map), vertex[k]);
+        for(int c = 0; c < 3; ++c)
+          m_extents(Eigen::Index(k), c) = CGAL::to_double(h[c]);
+        if(!fixed[k] && !extents_error(point(m_extents, k)).empty())
+          return "the box half-extents of vertex " + std::to_string(number[k]) + " " + extents_error(point(m_extents, k));
+      }
+    }
+    if constexpr(has_centre_map)
+    {
+      m_centre.resize(Eigen::Index(n), 3);
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const auto& c = get(get_parameter(np, vertex_box_center_map), vertex[k]);
+        point(m_centre, k) = Eigen::Vector3d(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
+        if(!fixed[k] && !point(m_centre, k).allFinite())
+          return "the box centre of vertex " + std::to_string(number[k]) + " has a NaN or infinite coordinate";
+      }
+    }
+    return std::string();
+  }
+
+  bool is_box() const { return m_box; }
+
+  // Renumbers the vertices: k becomes rank[k].
+  void permute(const std::vector<Index>& rank)
+  {
+    if(!m_tolerance.empty())
+    {
+      std::vector<double> t(m_tolerance.size());
+      for(std::size_t k = 0; k < t.size(); ++k)
+        t[rank[k]] = m_tolerance[k];
+      m_tolerance.swap(t);
+    }
+    permute_rows(rank, m_extents);
+    permute_rows(rank, m_centre);
+  }
+
+  // Vertex i's tolerance.
+  double tolerance(std::size_t i) const { return m_tolerance.empty() ? m_epsilon : m_tolerance[i]; }
+
+  Ball_bound ball(const Points& X0) const
+  {
+    return m_tolerance.empty() ? Ball_bound(X0, m_epsilon) : Ball_bound(X0, Vertex_sizes(m_tolerance));
+  }
+
+  Box_bound box(const Points& X0) const
+  {
+    const auto half_extents = [&](std::size_t i) {
+      const Eigen::Vector3d h = m_extents.rows() > 0 ? Eigen::Vector3d(point(m_extents, i)) : m_uniform_extents;
+      return Eigen::Vector3d(h.cwiseMin(tolerance(i)));
+    };
+    const auto centre = [&](std::size_t i) {
+      return Eigen::Vector3d(m_centre.rows() > 0 && tolerance(i) > 0 ? point(m_centre, i) : point(X0, i));
+    };
+    return Box_bound(X0, half_extents, centre);
+  }
+
+private:
+  static std::string extents_error(const Eigen::Vector3d& h)
+  {
+    if(h.allFinite() && (h.array() >= 0).all())
+      return std::string();
+    return "must be finite and non-negative (" + std::to_string(h[0]) + ", " + std::to_string(h[1]) + ", " +
+           std::to_string(h[2]) + ")";
+  }
+
+  static void permute_rows(const std::vector<Index>& rank, Points& P)
+  {
+    if(P.rows() == 0)
+      return;
+    Points sorted(P.rows(), 3);
+    for(std::size_t k = 0; k < rank.size(); ++k)
+      point(sorted, rank[k]) = point(P, k);
+    P.swap(sorted);
+  }
+
+  bool m_box = false;
+  double m_epsilon = 0;
+  std::vector<double> m_tolerance; // empty: epsilon for every vertex
+  Eigen::Vector3d m_uniform_extents;
+  Points m_extents, m_centre;      // empty: m_uniform_extents, the input points
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_VERTEX_BOUNDS_H
