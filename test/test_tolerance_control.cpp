@@ -183,7 +183,7 @@ void check_fixed_vertices()
     ++k;
   }
   CHECK(moved > (num_vertices(m) - number_fixed) / 2);
-  CHECK(energy_of(m) == result.final_energy);
+  CHECK(std::abs(energy_of(m) - result.final_energy) <= 1e-12 * result.final_energy); // summed in another order
 }
 
 // Only a region moves; everything else, its border included, is bit-identical; the whole

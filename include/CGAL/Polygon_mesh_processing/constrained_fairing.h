@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_lbfgs.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_order.h>
@@ -60,7 +61,8 @@ Solver_report fair(const Hinge_mesh& mesh, const Bound& bound, Bending_energy& e
 
 // The stopping rule of each method when the user sets none: the quasi-Newton method's energy
 // keeps decreasing in small, uneven steps, with plateaus of tens of iterations, long after the
-// noise is gone, so it is judged over 50 iterations and against a smaller threshold.
+// noise is gone, so it is judged over 50 iterations and against a smaller threshold. It
+// starts from a smoothed input (Smoothed_start.h); the paper's methods start from the input.
 inline Solver_options default_options(Constrained_fairing_method method)
 {
   Solver_options options;
@@ -69,6 +71,7 @@ inline Solver_options default_options(Constrained_fairing_method method)
     options.threshold = 1e-4;
     options.window = 50;
     options.max_iterations = 1000;
+    options.smoothing_steps = 16;
   }
   options.cauchy_steps_only = method == Constrained_fairing_method::PROJECTED_GRADIENT;
   return options;
@@ -172,6 +175,8 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
   options.threshold = choose_parameter(get_parameter(np, energy_decrease_threshold), options.threshold);
   options.cg_iterations = (std::max)(std::size_t(1), static_cast<std::size_t>(choose_parameter(
     get_parameter(np, conjugate_gradient_iterations), options.cg_iterations)));
+  options.smoothing_steps =
+    static_cast<std::size_t>(choose_parameter(get_parameter(np, initial_smoothing_steps), options.smoothing_steps));
   const auto callback = choose_parameter(get_parameter(np, iteration_callback), Always_continue());
   const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
   CGAL_precondition(options.threshold >= 0);
@@ -261,6 +266,14 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
     if(options.max_iterations > 0)
     {
+      // The smoothed start is kept only if it lowers the energy, so that the result never
+      // has a higher energy than the input.
+      if(options.smoothing_steps > 0)
+      {
+        smooth_start(mesh, bound, options.smoothing_steps, X);
+        if(!(energy.value(X) < result.initial_energy))
+          X = X0;
+      }
       const Solver_report report = fair(mesh, bound, energy, method, options, solver, callback, X);
       result.status = report.status;
       result.message = report.message;
@@ -502,6 +515,17 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
                           and one iteration lowered the energy fastest per second in our measurements}
     \cgalParamType{std::size_t}
     \cgalParamDefault{`1`}
+  \cgalParamNEnd
+  \cgalParamNBegin{initial_smoothing_steps}
+    \cgalParamDescription{the steps of Taubin's non-shrinking smoothing (each vertex moved
+                          towards, then away from the mean of its neighbours, and back into its
+                          bound) that make the starting point, kept if they lower the energy; `0`
+                          starts from the input. The energy is not convex: on terraced input
+                          (surface nets on thick slices) descent from the input stalls in the
+                          terraces, and on noisy scans the smoothed start also leads to lower
+                          minima}
+    \cgalParamType{std::size_t}
+    \cgalParamDefault{`16` for `QUASI_NEWTON`, `0` for the paper's methods}
   \cgalParamNEnd
   \cgalParamNBegin{iteration_callback}
     \cgalParamDescription{called after each iteration with its number (from 1) and the energy

@@ -46,6 +46,7 @@ enum fairing_method_t { fairing_method };
 enum energy_decrease_threshold_t { energy_decrease_threshold };
 enum conjugate_gradient_iterations_t { conjugate_gradient_iterations };
 enum iteration_callback_t { iteration_callback };
+enum initial_smoothing_steps_t { initial_smoothing_steps };
 enum vertex_tolerance_map_t { vertex_tolerance_map };
 enum box_half_extents_t { box_half_extents };
 enum vertex_box_half_extents_map_t { vertex_box_half_extents_map };
@@ -91,6 +92,8 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(energy_decrease_threshold)
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(conjugate_gradient_iterations)
 /// a callable `bool(std::size_t iteration, double energy)`, called after each iteration
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(iteration_callback)
+/// the steps of projected Taubin smoothing that give the starting point, a `std::size_t`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(initial_smoothing_steps)
 /// a readable property map from vertices to numbers: each vertex's own tolerance
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_tolerance_map)
 /// the half-extents of every vertex's box along x, y and z, a `std::array<double, 3>`

@@ -30,6 +30,8 @@ struct Solver_options
   std::size_t cg_iterations = 1;
   // Projected gradient method: Cauchy steps only.
   bool cauchy_steps_only = false;
+  // Steps of projected Taubin smoothing before the first iteration (Smoothed_start.h).
+  std::size_t smoothing_steps = 0;
 };
 
 struct Solver_report

@@ -1,0 +1,67 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The starting point of the quasi-Newton method: a few steps of projected Taubin smoothing of
+// the input, x_i <- P(x_i + f (mean of its neighbours - x_i)), all vertices at once, f
+// alternately lambda > 0 and mu < 0. Plain Laplacian steps (f > 0 only) shrink the surface,
+// and inside the bound that shrinkage stays: on a noisy sphere in boxes the result ended
+// 0.021 from the true sphere against 0.0024 with Taubin's steps.
+//
+// Why: the bending energy is not convex, and descent from a terraced input stops in a poor
+// local minimum. Surface nets of a sphere on 1 x 1 x 3 voxels, each vertex in its cell: the
+// quasi-Newton method from the input stops at bending energy 45 (39 after 5000 iterations),
+// 0.64 voxel from the sphere; from 16 smoothing steps it reaches 6.7, 0.06 voxel from it.
+// Averaging with the neighbours moves each terrace as a whole towards the slope it stands for,
+// which no step that lowers the energy locally does. On noisy scans the smoothed start also
+// leads to lower minima (the noisy bunny at 0.5 h: 206 against 264); a step costs less than a
+// gradient evaluation. Neighbours are taken from the triangles (an interior edge
+// counts twice, a border edge once), so that border vertices are smoothed along the border.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// Taubin's smoothing factors (G. Taubin, "A signal processing approach to fair surface
+// design", SIGGRAPH 1995): a shrinking step, then an inflating one.
+constexpr double taubin_lambda = 0.5, taubin_mu = -0.53;
+
+// `steps` steps from X, feasible on entry and after.
+template <typename Bound>
+void smooth_start(const Hinge_mesh& mesh, const Bound& bound, std::size_t steps, Points& X)
+{
+  const std::size_t n = static_cast<std::size_t>(X.rows());
+  std::vector<double> count(n, 0.);
+  for(const auto& t : mesh.triangles)
+    for(Index v : t)
+      count[v] += 2;
+  Points sum(X.rows(), 3);
+  for(std::size_t step = 0; step < steps; ++step)
+  {
+    sum.setZero();
+    for(const auto& t : mesh.triangles)
+      for(int k = 0; k < 3; ++k)
+        point(sum, t[std::size_t(k)]) += point(X, t[std::size_t((k + 1) % 3)]) + point(X, t[std::size_t((k + 2) % 3)]);
+    const double lambda = step % 2 == 0 ? taubin_lambda : taubin_mu;
+    for(std::size_t i = 0; i < n; ++i)
+      if(count[i] > 0)
+        point(X, i) = (1 - lambda) * point(X, i) + (lambda / count[i]) * point(sum, i);
+    bound.project(X);
+  }
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H
