@@ -7,19 +7,20 @@ example=$1 bad=$2 data=$3 work=$4
 mkdir -p "$work"
 failures=0
 
-# expect REASON IN EPS OUT
+# expect REASON IN EPS OUT, or expect REASON ARGUMENTS... (with options)
 expect() {
-  local reason=$1 out=$4
+  local reason=$1
+  shift
   rm -f "$work"/* "$work"/.[!.]*
-  "$example" "$2" "$3" "$out" > "$work/stdout.txt" 2> "$work/stderr.txt"
+  "$example" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt"
   local status=$? lines
   lines=$(wc -l < "$work/stderr.txt")
   if [ "$status" -eq 0 ] || [ "$lines" -ne 1 ] || ! grep -q "^error: .*$reason" "$work/stderr.txt" ||
      [ -n "$(find "$work" -name '*faired*')" ]; then
-    echo "FAILED: $2 $3 $out: exit $status, $lines lines: $(cat "$work/stderr.txt")"
+    echo "FAILED: $*: exit $status, $lines lines: $(cat "$work/stderr.txt")"
     failures=$((failures + 1))
   else
-    echo "ok: $(basename "$2") $3: $(cat "$work/stderr.txt")"
+    echo "ok: $*: $(cat "$work/stderr.txt")"
   fi
 }
 
@@ -35,6 +36,12 @@ expect "non-manifold vertex" "$bad/non_manifold_vertex.off" 0.1 "$out"
 expect "vertex 3 has a NaN or infinite coordinate" "$bad/nan.ply" 0.1 "$out"
 expect "face 1 of .* refers to vertex 1852400130, but there are 4 vertices" "$bad/face_index_out_of_range.ply" 0.1 "$out"
 expect "all triangles of the mesh have zero area" "$bad/zero_area.off" 0.1 "$out"
+expect "unknown option --bogus" --bogus "$data/head.off" 0.1 "$out"
+expect "box-extents must be three non-negative numbers" --box-extents 1,2 "$data/head.off" "$out"
+expect "box-extents must be three non-negative numbers" --box-extents 1,-2,1 "$data/head.off" "$out"
+expect "box-extents needs a value" "$data/head.off" "$out" --box-extents
+expect "needs a PLY input" --radius-from-property accuracy "$data/head.off" "$out"
+expect "too many arguments" "$data/head.off" 0.1 "$out" extra
 for eps in 0 -1 nan inf 0.1x abc; do
   expect "epsilon\|EPS" "$data/head.off" "$eps" "$out"
 done

@@ -3,17 +3,11 @@
 //
 // Fairs a mesh while keeping every vertex within epsilon of its input position.
 //
-//   constrained_fairing_example [IN] [EPS] [OUT]
+//   constrained_fairing_example [OPTIONS] [IN] [EPS] [OUT]
 //
-// IN   a triangle mesh in any format CGAL reads (OFF, OBJ, PLY, STL); default: the bundled
-//      noisy elephant
-// EPS  the tolerance: absolute (0.002), or relative to the mean edge length h when it ends
-//      with h (0.25h); default 0.25h
-// OUT  where to write the faired mesh (.off, .obj, .ply or .stl), full precision; default:
-//      faired.off
-//
-// On bad input or any failure, prints one line starting with "error:" and returns non-zero,
-// and writes nothing: the output is written to a temporary file, renamed to OUT once complete.
+// The arguments and options are described by `usage` below (--help prints it). On bad input
+// or any failure, prints one line starting with "error:" and returns non-zero, and writes
+// nothing: the output is written to a temporary file, renamed to OUT once complete.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
@@ -22,13 +16,17 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -37,6 +35,34 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
+
+const char* const usage = R"(usage: constrained_fairing_example [OPTIONS] [IN] [EPS] [OUT]
+
+Fairs a triangle mesh: minimizes its bending energy while every vertex stays within EPS of its
+input position (Hildebrandt and Polthier, SGP 2007).
+
+  IN    a triangle mesh in any format CGAL reads (OFF, OBJ, PLY, STL); default: the bundled
+        noisy elephant
+  EPS   the tolerance, absolute (0.002) or relative to the mean edge length h (0.25h); it caps
+        every other size below. Default: 0.25h, or the largest size the options give (then
+        IN OUT may be given without EPS)
+  OUT   where to write the result (.off, .obj, .ply or .stl), full precision; default
+        faired.off. A .ply also gets each vertex's distance to its input position (vertex
+        property "deviation") and whether it ended on its bound ("at_bound", 0 or 1)
+
+options:
+  --box                    each coordinate within EPS of its input value (a cube) instead of
+                           the ball of radius EPS
+  --box-extents HX,HY,HZ   a box of these half-extents around each vertex (a voxel's half
+                           size, for surfaces extracted from volumes; implies --box)
+  --radius-from-property NAME
+                           each vertex's own tolerance, read from the vertex property NAME of
+                           the PLY input (a scanner's per-point accuracy); 0 pins a vertex
+  --fixed-border           vertices on the mesh's border do not move
+  --help                   this text
+)";
 
 double mean_edge_length(const Mesh& mesh)
 {
@@ -165,43 +191,168 @@ std::string write_mesh(const std::string& out, const Mesh& mesh)
   return "cannot write " + out + (error ? " (" + error.message() + ")" : cgal.reason());
 }
 
+// Parses "HX,HY,HZ" (three non-negative numbers). Returns false if malformed.
+bool parse_extents(const std::string& text, std::array<double, 3>& h)
+{
+  std::istringstream in(text);
+  char comma1 = 0, comma2 = 0;
+  if(!(in >> h[0] >> comma1 >> h[1] >> comma2 >> h[2]) || comma1 != ',' || comma2 != ',' || !in.eof())
+    return false;
+  return std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x) && x >= 0; });
+}
+
+// Reads the vertex property `name` of the PLY file `in` into `radius`, by vertex number.
+std::string read_radius_property(const std::string& in, const std::string& name, const Mesh& mesh,
+                                 Mesh::Property_map<vertex_descriptor, double>& radius)
+{
+  Mesh with_properties;
+  std::ifstream stream(in, std::ios::binary);
+  Captured_cerr cgal;
+  if(std::filesystem::path(in).extension() != ".ply" || !CGAL::IO::read_PLY(stream, with_properties))
+    return "--radius-from-property needs a PLY input (" + in + ")";
+  if(num_vertices(with_properties) != num_vertices(mesh))
+    return "the vertices of " + in + " read as a PLY mesh differ from its points";
+  bool found = false;
+  Mesh::Property_map<vertex_descriptor, double> as_double;
+  Mesh::Property_map<vertex_descriptor, float> as_float;
+  std::tie(as_double, found) = with_properties.property_map<vertex_descriptor, double>("v:" + name);
+  if(!found)
+    std::tie(as_float, found) = with_properties.property_map<vertex_descriptor, float>("v:" + name);
+  if(!found)
+    return in + " has no float or double vertex property " + name;
+  for(vertex_descriptor v : vertices(mesh))
+    put(radius, v, as_double ? double(get(as_double, v)) : double(get(as_float, v)));
+  return std::string();
+}
+
+struct Options
+{
+  std::vector<std::string> positional;
+  bool box = false, fixed_border = false, help = false;
+  std::string extents, radius_property, error;
+};
+
+Options parse_options(int argc, char* argv[])
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    const auto value = [&](std::string& target) {
+      if(i + 1 < argc)
+        target = argv[++i];
+      else
+        o.error = a + " needs a value";
+    };
+    if(a == "--help" || a == "-h")
+      o.help = true;
+    else if(a == "--box")
+      o.box = true;
+    else if(a == "--fixed-border")
+      o.fixed_border = true;
+    else if(a == "--box-extents")
+      value(o.extents);
+    else if(a == "--radius-from-property")
+      value(o.radius_property);
+    else if(a.size() > 2 && a.compare(0, 2, "--") == 0)
+      o.error = "unknown option " + a + " (see --help)";
+    else
+      o.positional.push_back(a);
+  }
+  // IN OUT, EPS left out
+  if(o.positional.size() == 2 && writable_format(o.positional[1]))
+    o.positional.insert(o.positional.begin() + 1, std::string());
+  if(o.positional.size() > 3)
+    o.error = "too many arguments (see --help)";
+  return o;
+}
+
+int fail(const std::string& message)
+{
+  std::cerr << "error: " << message << std::endl;
+  return EXIT_FAILURE;
+}
+
 int main(int argc, char* argv[])
 {
-  const std::string in = argc > 1 ? argv[1] : CGAL_CONSTRAINED_FAIRING_DATA_DIR "/elephant_noisy.off";
-  const std::string eps_text = argc > 2 ? argv[2] : "0.25h";
-  const std::string out = argc > 3 ? argv[3] : "faired.off";
+  const Options options = parse_options(argc, argv);
+  if(options.help)
+  {
+    std::cout << usage;
+    return EXIT_SUCCESS;
+  }
+  if(!options.error.empty())
+    return fail(options.error);
+  const auto& args = options.positional;
+  const std::string in = args.size() > 0 ? args[0] : CGAL_CONSTRAINED_FAIRING_DATA_DIR "/elephant_noisy.off";
+  const std::string out = args.size() > 2 ? args[2] : "faired.off";
 
   if(!writable_format(out))
-  {
-    std::cerr << "error: OUT must end with .off, .obj, .ply or .stl (got " << out << ")" << std::endl;
-    return EXIT_FAILURE;
-  }
+    return fail("OUT must end with .off, .obj, .ply or .stl (got " + out + ")");
+  std::array<double, 3> extents{0, 0, 0};
+  if(!options.extents.empty() && !parse_extents(options.extents, extents))
+    return fail("--box-extents must be three non-negative numbers HX,HY,HZ (got " + options.extents + ")");
   Mesh mesh;
   const std::string read_error = read_mesh(in, mesh);
   if(!read_error.empty())
+    return fail(read_error);
+  auto radius = mesh.add_property_map<vertex_descriptor, double>("v:radius", 0.).first;
+  if(!options.radius_property.empty())
   {
-    std::cerr << "error: " << read_error << std::endl;
-    return EXIT_FAILURE;
+    const std::string error = read_radius_property(in, options.radius_property, mesh, radius);
+    if(!error.empty())
+      return fail(error);
   }
+
+  // EPS caps every size; without it, the largest size the options give, or 0.25h.
+  const bool eps_given = args.size() > 1 && !args[1].empty();
+  std::string eps_text = eps_given ? args[1] : "0.25h";
   double epsilon = 0;
-  if(!parse_epsilon(eps_text, mesh, epsilon))
+  if(eps_given || (options.extents.empty() && options.radius_property.empty()))
   {
-    std::cerr << "error: EPS must be a number, or a number followed by h (got " << eps_text << ")" << std::endl;
-    return EXIT_FAILURE;
+    if(!parse_epsilon(eps_text, mesh, epsilon))
+      return fail("EPS must be a number, or a number followed by h (got " + eps_text + ")");
+  }
+  else
+  {
+    epsilon = options.extents.empty() ? 0 : *std::max_element(extents.begin(), extents.end());
+    for(vertex_descriptor v : vertices(mesh))
+      if(!options.radius_property.empty() && get(radius, v) > epsilon)
+        epsilon = get(radius, v);
+    eps_text = "the largest size given";
   }
   std::cout << "input:       " << in << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces" << std::endl;
   std::cout << "epsilon:     " << epsilon << " (" << eps_text << ")" << std::endl;
+  std::cout << "bound:       " << (options.box || !options.extents.empty() ? "box" : "ball")
+            << (options.extents.empty() ? "" : ", half-extents " + options.extents)
+            << (options.radius_property.empty() ? "" : ", per-vertex tolerance from " + options.radius_property)
+            << (options.fixed_border ? ", border fixed" : "") << std::endl;
+
+  auto fixed = mesh.add_property_map<vertex_descriptor, bool>("v:fixed", false).first;
+  if(options.fixed_border)
+    for(vertex_descriptor v : vertices(mesh))
+      put(fixed, v, static_cast<bool>(CGAL::is_border(v, mesh)));
+  auto deviation = mesh.add_property_map<vertex_descriptor, double>("v:deviation", 0.).first;
+  auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
+  // Every option is passed, each in its neutral form when not asked for: a tolerance of
+  // epsilon for all, the cube of half-side epsilon.
+  if(options.radius_property.empty())
+    for(vertex_descriptor v : vertices(mesh))
+      put(radius, v, epsilon);
+  const std::array<double, 3> half_extents =
+    options.extents.empty() ? std::array<double, 3>{epsilon, epsilon, epsilon} : extents;
+  const auto common = CFP::vertex_tolerance_map(
+    radius, CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound).vertex_is_constrained_map(fixed)));
 
   const auto start = std::chrono::steady_clock::now();
-  const PMP::Constrained_fairing_result result = PMP::constrained_fairing(mesh, epsilon);
+  const PMP::Constrained_fairing_result result =
+    options.box || !options.extents.empty() ? PMP::constrained_fairing(mesh, epsilon, CFP::box_half_extents(half_extents, common))
+                                              : PMP::constrained_fairing(mesh, epsilon, common);
   const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
 
   if(!result)
-  {
-    std::cerr << "error: " << result.message << "; nothing written" << std::endl;
-    return EXIT_FAILURE;
-  }
+    return fail(result.message + "; nothing written");
   std::cout << "iterations:  " << result.number_of_iterations << " ("
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
             << ", " << result.number_of_energy_evaluations << " energy evaluations)" << std::endl;
@@ -209,15 +360,33 @@ int main(int argc, char* argv[])
   if(result.number_of_degenerate_edges > 0)
     std::cout << "degenerate:  " << result.number_of_degenerate_edges
               << " edges with a degenerate triangle, left out of the energy" << std::endl;
-  std::cout << "deviation:   " << result.max_deviation << " at most (bound " << epsilon << ")" << std::endl;
+  const bool box = options.box || !options.extents.empty();
+  std::cout << "deviation:   " << result.max_deviation << " at most ("
+            << (box ? "each coordinate within its box's half-extent" : "bound " + std::to_string(epsilon)) << "); "
+            << result.number_of_vertices_at_bound << " vertices at their bound, " << result.number_of_fixed_vertices
+            << " fixed" << std::endl;
   std::cout << "time:        " << seconds.count() << " s" << std::endl;
 
+  // Only a PLY output carries the per-vertex results; the helper maps go.
+  mesh.remove_property_map(radius);
+  mesh.remove_property_map(fixed);
+  const bool ply = std::filesystem::path(out).extension() == ".ply";
+  std::vector<std::uint8_t> flags;
+  for(vertex_descriptor v : vertices(mesh))
+    flags.push_back(std::uint8_t(get(at_bound, v)));
+  mesh.remove_property_map(at_bound);
+  if(ply)
+  {
+    auto at_bound_flag = mesh.add_property_map<vertex_descriptor, std::uint8_t>("v:at_bound", 0).first;
+    std::size_t k = 0;
+    for(vertex_descriptor v : vertices(mesh))
+      put(at_bound_flag, v, flags[k++]);
+  }
+  else
+    mesh.remove_property_map(deviation);
   const std::string write_error = write_mesh(out, mesh);
   if(!write_error.empty())
-  {
-    std::cerr << "error: " << write_error << "; nothing written" << std::endl;
-    return EXIT_FAILURE;
-  }
-  std::cout << "output:      " << out << std::endl;
+    return fail(write_error + "; nothing written");
+  std::cout << "output:      " << out << (ply ? " (with vertex properties deviation and at_bound)" : "") << std::endl;
   return EXIT_SUCCESS;
 }
