@@ -158,6 +158,30 @@ void check_same_result_on_polyhedron()
   CHECK(r_sm.final_energy == r_poly.final_energy);
   CHECK(test::identical(test::points(sm), test::points(poly)));
   CHECK(!test::identical(test::points(sm), input));
+
+  // A region (the faces with a vertex above z = 0), with the vertex at index 3 fixed: the same
+  // on both, a face range and a property map each of their own kind.
+  std::vector<boost::graph_traits<Mesh>::face_descriptor> sm_region;
+  std::vector<boost::graph_traits<Polyhedron>::face_descriptor> poly_region;
+  for(auto f : faces(sm))
+    if(sm.point(target(halfedge(f, sm), sm)).z() > 0)
+      sm_region.push_back(f);
+  for(auto f : faces(poly))
+    if(f->halfedge()->vertex()->point().z() > 0)
+      poly_region.push_back(f);
+  auto sm_fixed = get(CGAL::dynamic_vertex_property_t<bool>(), sm);
+  auto poly_fixed = get(CGAL::dynamic_vertex_property_t<bool>(), poly);
+  std::size_t k = 0;
+  for(auto v : vertices(sm))
+    put(sm_fixed, v, k++ == 3);
+  k = 0;
+  for(auto v : vertices(poly))
+    put(poly_fixed, v, k++ == 3);
+  const auto q_sm = PMP::constrained_fairing(sm_region, sm, 0.3 * h, CGAL::parameters::vertex_is_constrained_map(sm_fixed));
+  const auto q_poly =
+    PMP::constrained_fairing(poly_region, poly, 0.3 * h, CGAL::parameters::vertex_is_constrained_map(poly_fixed));
+  CHECK(q_sm && q_poly && q_sm.final_energy == q_poly.final_energy && q_sm.number_of_fixed_vertices > 1);
+  CHECK(test::identical(test::points(sm), test::points(poly)));
 }
 
 void check_untouched()

@@ -83,33 +83,27 @@ inline Solver_options default_options(Constrained_fairing_method method)
 // With a face range R: a vertex moves when all its faces are in R; the triangles are R and its
 // neighbours across an edge, and a hinge counts when one of its four vertices moves.
 template <typename TriangleMesh>
-struct Fairing_part
+class Fairing_part
 {
+public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
-  std::vector<vertex_descriptor> vertex;
-  std::vector<std::size_t> number; // the vertices' positions in vertices(tmesh)
-  std::vector<bool> fixed;
-  std::vector<face_descriptor> triangle;
-
-  // The whole mesh.
+  // The whole mesh: no list is stored, the vertices are those of `tmesh` in their order.
   template <typename IsConstrained>
   Fairing_part(const TriangleMesh& tmesh, const IsConstrained& is_constrained)
+    : m_tmesh(tmesh), m_size(static_cast<std::size_t>(num_vertices(tmesh)))
   {
-    std::size_t k = 0;
+    m_fixed.reserve(m_size);
     for(auto v : vertices(tmesh))
-    {
-      vertex.push_back(v);
-      number.push_back(k++);
-      fixed.push_back(get(is_constrained, v));
-    }
+      m_fixed.push_back(get(is_constrained, v));
   }
 
   // A face range; `vertex_index` numbers the vertices in the order of vertices(tmesh).
   template <typename FaceRange, typename VertexIndexMap, typename IsConstrained>
   Fairing_part(const FaceRange& region, const TriangleMesh& tmesh, const VertexIndexMap& vertex_index,
                const IsConstrained& is_constrained)
+    : m_tmesh(tmesh)
   {
     auto in_region = get(CGAL::dynamic_face_property_t<bool>(), tmesh);
     auto in_part = get(CGAL::dynamic_face_property_t<bool>(), tmesh);
@@ -126,12 +120,12 @@ struct Fairing_part
           if(g != boost::graph_traits<TriangleMesh>::null_face() && !get(in_part, g))
           {
             put(in_part, g, true);
-            triangle.push_back(g);
+            m_triangles.push_back(g);
           }
     auto taken = get(CGAL::dynamic_vertex_property_t<bool>(), tmesh);
     for(auto v : vertices(tmesh))
       put(taken, v, false);
-    for(auto f : triangle)
+    for(auto f : m_triangles)
       for(auto v : vertices_around_face(halfedge(f, tmesh), tmesh))
         put(taken, v, true);
     for(auto v : vertices(tmesh))
@@ -141,11 +135,40 @@ struct Fairing_part
       bool moves = !get(is_constrained, v);
       for(auto f : faces_around_target(halfedge(v, tmesh), tmesh))
         moves = moves && (f == boost::graph_traits<TriangleMesh>::null_face() || get(in_region, f));
-      vertex.push_back(v);
-      number.push_back(get(vertex_index, v));
-      fixed.push_back(!moves);
+      m_vertices.push_back(v);
+      m_numbers.push_back(get(vertex_index, v));
+      m_fixed.push_back(!moves);
     }
+    m_size = m_vertices.size();
   }
+
+  std::size_t size() const { return m_size; }
+  // The triangles of a face range's part (unused for the whole mesh).
+  const std::vector<face_descriptor>& triangles() const { return m_triangles; }
+  bool is_fixed(std::size_t k) const { return m_fixed[k]; }
+  // Vertex k's position in vertices(tmesh), which names it in messages.
+  std::size_t number(std::size_t k) const { return m_numbers.empty() ? k : m_numbers[k]; }
+
+  // f(k, v) for each vertex v, k from 0.
+  template <typename F>
+  void for_each_vertex(const F& f) const
+  {
+    std::size_t k = 0;
+    if(m_vertices.empty())
+      for(auto v : vertices(m_tmesh))
+        f(k++, v);
+    else
+      for(auto v : m_vertices)
+        f(k++, v);
+  }
+
+private:
+  const TriangleMesh& m_tmesh;
+  std::size_t m_size = 0;
+  std::vector<vertex_descriptor> m_vertices; // empty for the whole mesh
+  std::vector<std::size_t> m_numbers;        // empty for the whole mesh
+  std::vector<bool> m_fixed;
+  std::vector<face_descriptor> m_triangles;
 };
 
 template <typename TriangleMesh, typename FaceRange, typename NamedParameters>
@@ -202,40 +225,39 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
   const Fairing_part<TriangleMesh> part =
     region ? Fairing_part<TriangleMesh>(*region, tmesh, vertex_index, is_constrained)
            : Fairing_part<TriangleMesh>(tmesh, is_constrained);
-  const std::size_t n = part.vertex.size();
+  const std::size_t n = part.size();
+  const auto number = [&part](std::size_t k) { return part.number(k); };
   Points X0(static_cast<Eigen::Index>(n), 3);
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const Point_3& p = get(vpm, part.vertex[k]);
+  part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
+    const Point_3& p = get(vpm, v);
     point(X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-  result.message = coordinates_error(X0, part.number);
+  });
+  result.message = coordinates_error(X0, number);
   if(result.message.empty())
     result.message = epsilon_error(epsilon);
   Vertex_bounds bounds;
   if(result.message.empty())
-    result.message = bounds.read<TriangleMesh>(part.vertex, part.fixed, part.number, epsilon, np);
+    result.message = bounds.read(part, epsilon, np);
   if(!result.message.empty())
     return result;
 
-  // From here on, the vertices are stored in the Hilbert order of their input positions.
-  const std::vector<Index> rank = hilbert_rank(X0);
+  // From here on, the vertices are stored in the Hilbert order of their input positions, and
+  // `vertex_index` maps each vertex of the part to its place in that order.
+  std::vector<bool> moving(n);
   {
+    const std::vector<Index> rank = hilbert_rank(X0);
     Points sorted(X0.rows(), 3);
-    for(std::size_t k = 0; k < n; ++k)
-    {
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
       point(sorted, rank[k]) = point(X0, k);
-      put(vertex_index, part.vertex[k], std::size_t(rank[k]));
-    }
+      put(vertex_index, v, std::size_t(rank[k]));
+      moving[rank[k]] = !part.is_fixed(k);
+    });
     X0.swap(sorted);
     bounds.permute(rank);
   }
-  std::vector<bool> moving(n);
-  for(std::size_t k = 0; k < n; ++k)
-    moving[rank[k]] = !part.fixed[k];
   result.number_of_fixed_vertices = static_cast<std::size_t>(std::count(moving.begin(), moving.end(), false));
   const Hinge_mesh mesh =
-    region ? Hinge_mesh(tmesh, part.triangle, n, vertex_index,
+    region ? Hinge_mesh(tmesh, part.triangles(), n, vertex_index,
                         [&](const std::array<Index, 4>& v) {
                           return moving[v[0]] || moving[v[1]] || moving[v[2]] || moving[v[3]];
                         })
@@ -247,18 +269,16 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     return result;
   }
 
-  // Each vertex's deviation and whether it is at its bound, for the outputs.
-  std::vector<double> deviation(n, 0.);
-  std::vector<bool> at_bound(n, false);
   Points X = X0;
   const auto run = [&](const auto& bound) {
     const std::size_t outside = bound.first_outside(X0);
     if(outside < n)
     {
       result.status = Constrained_fairing_status::INVALID_INPUT;
-      for(std::size_t k = 0; k < n; ++k)
-        if(rank[k] == outside)
-          result.message = "vertex " + std::to_string(part.number[k]) + " lies outside its box";
+      part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
+        if(get(vertex_index, v) == outside)
+          result.message = "vertex " + std::to_string(part.number(k)) + " lies outside its box";
+      });
       return;
     }
     result.initial_energy = result.final_energy = energy.value(X0);
@@ -286,11 +306,29 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     }
     result.max_deviation = bound.max_deviation(X);
     typename std::decay_t<decltype(bound)>::Face face;
+    const auto is_at_bound = [&](std::size_t i) {
+      return moving[i] && bounds.tolerance(i) > 0 && bound.is_on_boundary(X, i, face);
+    };
     for(std::size_t i = 0; i < n; ++i)
+      result.number_of_vertices_at_bound += is_at_bound(i);
+
+    // The outputs, 0 and false for the vertices outside the part.
+    if constexpr(!is_default_parameter<NamedParameters, vertex_deviation_map_t>::value)
     {
-      deviation[i] = bound.deviation(X, i);
-      at_bound[i] = moving[i] && bounds.tolerance(i) > 0 && bound.is_on_boundary(X, i, face);
-      result.number_of_vertices_at_bound += at_bound[i];
+      const auto deviation_map = get_parameter(np, vertex_deviation_map);
+      if(region)
+        for(auto v : vertices(tmesh))
+          put(deviation_map, v, 0);
+      part.for_each_vertex(
+        [&](std::size_t, vertex_descriptor v) { put(deviation_map, v, bound.deviation(X, get(vertex_index, v))); });
+    }
+    if constexpr(!is_default_parameter<NamedParameters, vertex_at_bound_map_t>::value)
+    {
+      const auto at_bound_map = get_parameter(np, vertex_at_bound_map);
+      if(region)
+        for(auto v : vertices(tmesh))
+          put(at_bound_map, v, false);
+      part.for_each_vertex([&](std::size_t, vertex_descriptor v) { put(at_bound_map, v, is_at_bound(get(vertex_index, v))); });
     }
   };
   if(bounds.is_box())
@@ -302,28 +340,11 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
 
   // Only moved vertices are written: the others keep their coordinates exactly, even in an
   // exact kernel.
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const std::size_t i = rank[k];
+  part.for_each_vertex([&](std::size_t, vertex_descriptor v) {
+    const std::size_t i = get(vertex_index, v);
     if(point(X, i) != point(X0, i))
-      put(vpm, part.vertex[k], Point_3(X(i, 0), X(i, 1), X(i, 2)));
-  }
-  if constexpr(!is_default_parameter<NamedParameters, vertex_deviation_map_t>::value)
-  {
-    const auto deviation_map = get_parameter(np, vertex_deviation_map);
-    for(auto v : vertices(tmesh))
-      put(deviation_map, v, 0);
-    for(std::size_t k = 0; k < n; ++k)
-      put(deviation_map, part.vertex[k], deviation[rank[k]]);
-  }
-  if constexpr(!is_default_parameter<NamedParameters, vertex_at_bound_map_t>::value)
-  {
-    const auto at_bound_map = get_parameter(np, vertex_at_bound_map);
-    for(auto v : vertices(tmesh))
-      put(at_bound_map, v, false);
-    for(std::size_t k = 0; k < n; ++k)
-      put(at_bound_map, part.vertex[k], bool(at_bound[rank[k]]));
-  }
+      put(vpm, v, Point_3(X(i, 0), X(i, 1), X(i, 2)));
+  });
   return result;
 }
 

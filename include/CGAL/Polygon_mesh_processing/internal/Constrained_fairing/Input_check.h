@@ -138,12 +138,13 @@ std::string size_error(const TriangleMesh& tmesh)
          std::to_string(Hinge_mesh::max_faces) + " faces";
 }
 
-// `number[i]` names vertex i in the message.
-inline std::string coordinates_error(const Points& X0, const std::vector<std::size_t>& number)
+// `number(i)` names vertex i in the message.
+template <typename Number>
+std::string coordinates_error(const Points& X0, const Number& number)
 {
   for(Eigen::Index i = 0; i < X0.rows(); ++i)
     if(!X0.row(i).allFinite())
-      return "vertex " + std::to_string(number[static_cast<std::size_t>(i)]) + " has a NaN or infinite coordinate";
+      return "vertex " + std::to_string(number(static_cast<std::size_t>(i))) + " has a NaN or infinite coordinate";
   return std::string();
 }
 

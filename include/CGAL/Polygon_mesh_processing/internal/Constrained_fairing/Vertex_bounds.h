@@ -18,9 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
-#include <CGAL/property_map.h>
 
 #include <array>
 #include <cmath>
@@ -37,13 +35,11 @@ namespace Constrained_fairing {
 class Vertex_bounds
 {
 public:
-  // The vertices taking part, `fixed[k]` for those that must not move; `number[k]` names
-  // vertex k in messages. Reads the named parameters and returns an error message, or an
-  // empty string if every value is usable.
-  template <typename TriangleMesh, typename NamedParameters>
-  std::string read(const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex,
-                   const std::vector<bool>& fixed, const std::vector<std::size_t>& number, double epsilon,
-                   const NamedParameters& np)
+  // Reads the named parameters for the vertices of `part` (a Fairing_part: size(),
+  // is_fixed(k), number(k) that names vertex k in messages, for_each_vertex(f(k, v))). Returns
+  // an error message, or an empty string if every value is usable.
+  template <typename Part, typename NamedParameters>
+  std::string read(const Part& part, double epsilon, const NamedParameters& np)
   {
     using parameters::get_parameter;
     using parameters::is_default_parameter;
@@ -60,28 +56,12 @@ public:
     m_box = box_asked || box_parameters;
     m_epsilon = epsilon;
 
-    const std::size_t n = vertex.size();
+    const std::size_t n = part.size();
     bool any_fixed = false;
-    for(bool f : fixed)
-      any_fixed = any_fixed || f;
+    for(std::size_t k = 0; k < n; ++k)
+      any_fixed = any_fixed || part.is_fixed(k);
     if(has_tolerance || any_fixed)
       m_tolerance.assign(n, epsilon);
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      if(fixed[k])
-      {
-        m_tolerance[k] = 0;
-        continue;
-      }
-      if constexpr(has_tolerance)
-      {
-        const double t = CGAL::to_double(get(get_parameter(np, vertex_tolerance_map), vertex[k]));
-        if(!(t >= 0) || !std::isfinite(t))
-          return "vertex " + std::to_string(number[k]) + " has a negative, NaN or infinite tolerance (" + std::to_string(t) + ")";
-        m_tolerance[k] = (std::min)(t, epsilon);
-      }
-    }
-
     m_uniform_extents = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
     if constexpr(has_extents)
     {
@@ -92,29 +72,45 @@ public:
         return "box_half_extents " + extents_error(m_uniform_extents);
     }
     if constexpr(has_extents_map)
-    {
       m_extents.resize(Eigen::Index(n), 3);
-      for(std::size_t k = 0; k < n; ++k)
+    if constexpr(has_centre_map)
+      m_centre.resize(Eigen::Index(n), 3);
+
+    // The first bad value of a vertex that may move.
+    std::string error;
+    part.for_each_vertex([&](std::size_t k, auto v) {
+      if(!error.empty())
+        return;
+      if(part.is_fixed(k))
       {
-        const auto& h = get(get_parameter(np, vertex_box_half_extents_map), vertex[k]);
+        m_tolerance[k] = 0;
+        return;
+      }
+      const std::string vertex = "vertex " + std::to_string(part.number(k));
+      if constexpr(has_tolerance)
+      {
+        const double t = CGAL::to_double(get(get_parameter(np, vertex_tolerance_map), v));
+        if(!(t >= 0) || !std::isfinite(t))
+          error = vertex + " has a negative, NaN or infinite tolerance (" + std::to_string(t) + ")";
+        m_tolerance[k] = (std::min)(t, epsilon);
+      }
+      if constexpr(has_extents_map)
+      {
+        const auto& h = get(get_parameter(np, vertex_box_half_extents_map), v);
         for(int c = 0; c < 3; ++c)
           m_extents(Eigen::Index(k), c) = CGAL::to_double(h[c]);
-        if(!fixed[k] && !extents_error(point(m_extents, k)).empty())
-          return "the box half-extents of vertex " + std::to_string(number[k]) + " " + extents_error(point(m_extents, k));
+        if(error.empty() && !extents_error(point(m_extents, k)).empty())
+          error = "the box half-extents of " + vertex + " " + extents_error(point(m_extents, k));
       }
-    }
-    if constexpr(has_centre_map)
-    {
-      m_centre.resize(Eigen::Index(n), 3);
-      for(std::size_t k = 0; k < n; ++k)
+      if constexpr(has_centre_map)
       {
-        const auto& c = get(get_parameter(np, vertex_box_center_map), vertex[k]);
+        const auto& c = get(get_parameter(np, vertex_box_center_map), v);
         point(m_centre, k) = Eigen::Vector3d(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
-        if(!fixed[k] && !point(m_centre, k).allFinite())
-          return "the box centre of vertex " + std::to_string(number[k]) + " has a NaN or infinite coordinate";
+        if(error.empty() && !point(m_centre, k).allFinite())
+          error = "the box centre of " + vertex + " has a NaN or infinite coordinate";
       }
-    }
-    return std::string();
+    });
+    return error;
   }
 
   bool is_box() const { return m_box; }
