@@ -119,7 +119,7 @@ void print_row(const std::string& name, const Quality& q, double seconds, std::s
   std::cout << std::left << std::setw(26) << name << std::right << std::setprecision(4) << std::setw(11)
             << q.max_distance << (q.ball_holds ? " " : "!") << std::setw(11) << q.max_coordinate
             << (q.box_holds ? " " : "!") << std::setw(10) << q.energy << std::setw(11) << q.surface_rms
-            << std::setw(9) << q.normal_error_deg << std::setw(9) << q.min_angle_deg << std::setw(7) << q.folds
+            << std::setw(9) << q.normal_error_deg << std::setw(11) << q.min_angle_deg << std::setw(7) << q.folds
             << std::setw(6) << iterations << std::setw(9) << seconds << std::endl;
 }
 
@@ -214,7 +214,7 @@ int main(int argc, char* argv[])
             << " faces; eps = " << std::setprecision(17) << eps << "; median of " << runs << " runs\n\n";
   std::cout << std::left << std::setw(26) << "mode" << std::right << std::setw(12) << "max |p-p0|" << std::setw(12)
             << "max coord" << std::setw(10) << "energy" << std::setw(11) << "surf RMS" << std::setw(9) << "normal"
-            << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(6) << "it" << std::setw(9) << "s"
+            << std::setw(11) << "min ang" << std::setw(7) << "folds" << std::setw(6) << "it" << std::setw(9) << "s"
             << "\n";
 
   Mesh untouched = noisy;

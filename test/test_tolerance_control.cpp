@@ -221,6 +221,12 @@ void check_region()
   }
   CHECK(inner > 50 && moved > inner / 2);
 
+  // An empty face range does nothing, and says so.
+  Mesh untouched = noisy_sphere();
+  const auto none = PMP::constrained_fairing(std::vector<boost::graph_traits<Mesh>::face_descriptor>(), untouched, eps);
+  CHECK(none.status == Constrained_fairing_status::CONVERGED && none.number_of_iterations == 0);
+  CHECK(test::identical(test::points(untouched), test::points(noisy_sphere())));
+
   Mesh whole = noisy_sphere(), region = noisy_sphere();
   const auto a = PMP::constrained_fairing(whole, eps);
   const auto b = PMP::constrained_fairing(faces(region), region, eps);

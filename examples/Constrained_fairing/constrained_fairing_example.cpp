@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/version_macros.h>
 
 #include <algorithm>
 #include <array>
@@ -28,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -201,6 +203,19 @@ bool parse_extents(const std::string& text, std::array<double, 3>& h)
   return std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x) && x >= 0; });
 }
 
+// The vertex property `name` of `m` with values of type T, if there is one (CGAL 6 returns an
+// optional map, CGAL 5 a pair).
+template <typename T>
+std::optional<Mesh::Property_map<vertex_descriptor, T> > find_property(const Mesh& m, const std::string& name)
+{
+#if CGAL_VERSION_MAJOR >= 6
+  return m.property_map<vertex_descriptor, T>(name);
+#else
+  const auto found = m.property_map<vertex_descriptor, T>(name);
+  return found.second ? std::make_optional(found.first) : std::nullopt;
+#endif
+}
+
 // Reads the vertex property `name` of the PLY file `in` into `radius`, by vertex number.
 std::string read_radius_property(const std::string& in, const std::string& name, const Mesh& mesh,
                                  Mesh::Property_map<vertex_descriptor, double>& radius)
@@ -212,16 +227,12 @@ std::string read_radius_property(const std::string& in, const std::string& name,
     return "--radius-from-property needs a PLY input (" + in + ")";
   if(num_vertices(with_properties) != num_vertices(mesh))
     return "the vertices of " + in + " read as a PLY mesh differ from its points";
-  bool found = false;
-  Mesh::Property_map<vertex_descriptor, double> as_double;
-  Mesh::Property_map<vertex_descriptor, float> as_float;
-  std::tie(as_double, found) = with_properties.property_map<vertex_descriptor, double>("v:" + name);
-  if(!found)
-    std::tie(as_float, found) = with_properties.property_map<vertex_descriptor, float>("v:" + name);
-  if(!found)
+  const auto as_double = find_property<double>(with_properties, "v:" + name);
+  const auto as_float = find_property<float>(with_properties, "v:" + name);
+  if(!as_double && !as_float)
     return in + " has no float or double vertex property " + name;
   for(vertex_descriptor v : vertices(mesh))
-    put(radius, v, as_double ? double(get(as_double, v)) : double(get(as_float, v)));
+    put(radius, v, as_double ? get(*as_double, v) : double(get(*as_float, v)));
   return std::string();
 }
 

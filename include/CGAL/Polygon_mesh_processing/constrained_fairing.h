@@ -226,6 +226,11 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     region ? Fairing_part<TriangleMesh>(*region, tmesh, vertex_index, is_constrained)
            : Fairing_part<TriangleMesh>(tmesh, is_constrained);
   const std::size_t n = part.size();
+  if(n == 0) // an empty face range: nothing to do
+  {
+    result.status = Constrained_fairing_status::CONVERGED;
+    return result;
+  }
   const auto number = [&part](std::size_t k) { return part.number(k); };
   Points X0(static_cast<Eigen::Index>(n), 3);
   part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
@@ -599,7 +604,8 @@ As `constrained_fairing(tmesh, epsilon, np)`, with the same named parameters, bu
 vertices whose faces all lie in `face_range` move: the vertices on the border of the region
 stay, and so does every vertex outside it. The energy is the sum over the hinges that touch a
 moving vertex (as an edge end or an opposite vertex), so that the result meets the rest of the
-mesh smoothly. Calling it with `faces(tmesh)` is the same as fairing the whole mesh. The whole
+mesh smoothly. Calling it with `faces(tmesh)` is the same as fairing the whole mesh; an empty
+range changes nothing and returns `CONVERGED`. The whole
 mesh is checked as for the other overload; vertices are numbered in messages as there.
 
 \tparam FaceRange a model of `ConstRange` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
