@@ -183,6 +183,29 @@ void check_fixed_vertices()
     ++k;
   }
   CHECK(moved > (num_vertices(m) - number_fixed) / 2);
+
+  // Fixed vertices with per-vertex boxes: their boxes are not read, and they still stay.
+  Mesh boxed = noisy_sphere();
+  auto boxed_fixed = boxed.add_property_map<vertex_descriptor, bool>("v:fixed", false).first;
+  auto extents = boxed.add_property_map<vertex_descriptor, std::array<double, 3> >("v:extents").first;
+  k = 0;
+  for(auto v : vertices(boxed))
+  {
+    put(boxed_fixed, v, in[k++].z() > 0.3);
+    put(extents, v, std::array<double, 3>{eps, eps, 2 * eps});
+  }
+  const auto boxed_result = PMP::constrained_fairing(
+    boxed, 2 * eps, CFP::vertex_box_half_extents_map(extents, CGAL::parameters::vertex_is_constrained_map(boxed_fixed)));
+  CHECK(boxed_result && boxed_result.number_of_fixed_vertices == number_fixed);
+  k = 0;
+  for(auto v : vertices(boxed))
+  {
+    const Point p = boxed.point(v), p0 = in[k++];
+    if(get(boxed_fixed, v))
+      CHECK(identical(p, p0));
+    else
+      CHECK(std::abs(p.x() - p0.x()) <= eps && std::abs(p.y() - p0.y()) <= eps && std::abs(p.z() - p0.z()) <= 2 * eps);
+  }
   CHECK(std::abs(energy_of(m) - result.final_energy) <= 1e-12 * result.final_energy); // summed in another order
 }
 

@@ -64,7 +64,7 @@ public:
     history.push(E);
     // The first Cauchy step moves the vertex of largest gradient by epsilon.
     const double largest_gradient = m_G.rowwise().norm().maxCoeff();
-    double t_cauchy = largest_gradient > 0 ? m_bound.epsilon() / largest_gradient : 0;
+    double t_cauchy = largest_gradient > 0 ? m_bound.largest_size() / largest_gradient : 0;
     double t_newton = 1;
 
     while(report.iterations < options.max_iterations)

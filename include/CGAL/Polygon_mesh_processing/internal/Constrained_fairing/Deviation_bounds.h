@@ -73,8 +73,8 @@ class Deviation_bound_base
 public:
   Deviation_bound_base(const Points& X0, double largest) : m_X0(X0), m_largest(largest) {}
 
-  // The largest distance a vertex may move along one axis (the solvers' first step).
-  double epsilon() const { return m_largest; }
+  // The largest radius or half-extent of any vertex (the solvers' first step).
+  double largest_size() const { return m_largest; }
   const Points& input_points() const { return m_X0; }
 
   // X = P(X), the closest point of Omega (up to the last bit, which is chosen inwards)

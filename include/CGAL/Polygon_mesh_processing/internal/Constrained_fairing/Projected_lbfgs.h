@@ -72,7 +72,7 @@ public:
     // The first step moves the vertex of largest scaled gradient by epsilon.
     precondition(m_G, m_D);
     const double largest_step = m_D.rowwise().norm().maxCoeff();
-    double t_gradient = largest_step > 0 ? m_bound.epsilon() / largest_step : 0;
+    double t_gradient = largest_step > 0 ? m_bound.largest_size() / largest_step : 0;
     m_pairs = 0;
 
     while(report.iterations < options.max_iterations)

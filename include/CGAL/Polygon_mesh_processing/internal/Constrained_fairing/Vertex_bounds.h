@@ -71,10 +71,11 @@ public:
       if(!extents_error(m_uniform_extents).empty())
         return "box_half_extents " + extents_error(m_uniform_extents);
     }
+    // Zero for the fixed vertices, whose values are not read.
     if constexpr(has_extents_map)
-      m_extents.resize(Eigen::Index(n), 3);
+      m_extents.setZero(Eigen::Index(n), 3);
     if constexpr(has_centre_map)
-      m_centre.resize(Eigen::Index(n), 3);
+      m_centre.setZero(Eigen::Index(n), 3);
 
     // The first bad value of a vertex that may move.
     std::string error;
