@@ -19,19 +19,10 @@
 // shared/data (the CONSTRAINED_FAIRING_SHARED_DATA path) and says so; it skips cleanly when
 // they are not there.
 
-#include "benchmark_support.h"
+#include "surface_quality.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
-#include <CGAL/version_macros.h>
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_tree.h>
-#if CGAL_VERSION_MAJOR >= 6
-#include <CGAL/AABB_traits_3.h>
-#else
-#include <CGAL/AABB_traits.h>
-#endif
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
@@ -47,72 +38,11 @@
 #include <string>
 #include <vector>
 
-using benchmark::K;
+using benchmark::Clean_surface;
 using benchmark::Mesh;
-using benchmark::Point;
+using benchmark::Quality;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-#if CGAL_VERSION_MAJOR >= 6
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<K, Primitive> >;
-#else
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> >;
-#endif
-
-struct Quality
-{
-  double max_distance = 0;   // Euclidean, to the input position
-  double max_coordinate = 0; // largest per-coordinate offset
-  bool ball_holds = true, box_holds = true;
-  double energy = 0, surface_rms = 0, normal_error_deg = 0, min_angle_deg = 180;
-  std::size_t folds = 0;
-};
-
-double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
-{
-  const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
-  return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI;
-}
-
-Quality measure(const Mesh& result, const Mesh& input, const Mesh& clean, const Tree& clean_tree, double eps,
-                double energy)
-{
-  Quality q;
-  q.energy = energy;
-  double sum2 = 0;
-  for(auto v : vertices(result))
-  {
-    const Point& p = result.point(v);
-    const Point& p0 = input.point(v);
-    const double d2 = CGAL::squared_distance(p, p0);
-    q.max_distance = (std::max)(q.max_distance, std::sqrt(d2));
-    q.ball_holds = q.ball_holds && d2 <= eps * eps && std::sqrt(d2) <= eps;
-    for(int c = 0; c < 3; ++c)
-    {
-      const double dc = std::abs(p[c] - p0[c]);
-      q.max_coordinate = (std::max)(q.max_coordinate, dc);
-      q.box_holds = q.box_holds && dc <= eps;
-    }
-    sum2 += clean_tree.squared_distance(p);
-  }
-  q.surface_rms = std::sqrt(sum2 / double(num_vertices(result)));
-
-  double normal_sum = 0;
-  for(auto f : faces(result))
-  {
-    const auto n = PMP::compute_face_normal(f, result);
-    const auto n_clean = PMP::compute_face_normal(f, clean);
-    normal_sum += angle_deg(n, n_clean);
-    if(n * n_clean < 0)
-      ++q.folds;
-    const auto h = halfedge(f, result);
-    const Point a = result.point(source(h, result)), b = result.point(target(h, result)),
-                c = result.point(target(next(h, result), result));
-    q.min_angle_deg = (std::min)({q.min_angle_deg, angle_deg(b - a, c - a), angle_deg(a - b, c - b), angle_deg(a - c, b - c)});
-  }
-  q.normal_error_deg = normal_sum / double(num_faces(result));
-  return q;
-}
 
 void print_row(const std::string& name, const Quality& q, double seconds, std::size_t iterations)
 {
@@ -207,8 +137,7 @@ int main(int argc, char* argv[])
               << clean_file << std::endl;
     return EXIT_FAILURE;
   }
-  Tree clean_tree(faces(clean).first, faces(clean).second, clean);
-  clean_tree.accelerate_distance_queries();
+  const Clean_surface clean_surface(clean);
 
   std::cout << noisy_file << ": " << num_vertices(noisy) << " vertices, " << num_faces(noisy)
             << " faces; eps = " << std::setprecision(17) << eps << "; median of " << runs << " runs\n\n";
@@ -220,7 +149,7 @@ int main(int argc, char* argv[])
   Mesh untouched = noisy;
   const double input_energy =
     PMP::constrained_fairing(untouched, eps, CGAL::parameters::number_of_iterations(0)).initial_energy;
-  print_row("input", measure(noisy, noisy, clean, clean_tree, eps, input_energy), 0, 0);
+  print_row("input", benchmark::measure(noisy, noisy, clean_surface, eps, input_energy), 0, 0);
 
   auto run_mode = [&](const std::string& name, auto&& call, bool print = true) {
     Mesh result;
@@ -230,7 +159,7 @@ int main(int argc, char* argv[])
       r = call(result);
     });
     if(print)
-      print_row(name, measure(result, noisy, clean, clean_tree, eps, r.final_energy), seconds, r.number_of_iterations);
+      print_row(name, benchmark::measure(result, noisy, clean_surface, eps, r.final_energy), seconds, r.number_of_iterations);
     return std::make_pair(r, seconds);
   };
 

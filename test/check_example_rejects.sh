@@ -42,6 +42,7 @@ expect "box-extents must be three non-negative numbers" --box-extents 1,-2,1 "$d
 expect "box-extents needs a value" "$data/head.off" "$out" --box-extents
 expect "needs a PLY input" --radius-from-property accuracy "$data/head.off" "$out"
 expect "too many arguments" "$data/head.off" 0.1 "$out" extra
+expect "cannot estimate the noise level" "$bad/zero_area.off" auto "$out"
 for eps in 0 -1 nan inf 0.1x abc; do
   expect "epsilon\|EPS" "$data/head.off" "$eps" "$out"
 done

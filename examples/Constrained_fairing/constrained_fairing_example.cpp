@@ -10,6 +10,7 @@
 // nothing: the output is written to a temporary file, renamed to OUT once complete.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -47,9 +48,10 @@ input position (Hildebrandt and Polthier, SGP 2007).
 
   IN    a triangle mesh in any format CGAL reads (OFF, OBJ, PLY, STL); default: the bundled
         noisy elephant
-  EPS   the tolerance, absolute (0.002) or relative to the mean edge length h (0.25h); it caps
-        every other size below. Default: 0.25h, or the largest size the options give (then
-        IN OUT may be given without EPS)
+  EPS   the tolerance, absolute (0.002), relative to the mean edge length h (0.25h), or auto:
+        the noise level estimated from the mesh itself; it caps every other size below.
+        Default: 0.25h, or the largest size the options give (then IN OUT may be given
+        without EPS)
   OUT   where to write the result (.off, .obj, .ply or .stl), full precision; default
         faired.off. A .ply also gets each vertex's distance to its input position (vertex
         property "deviation") and whether it ended on its bound ("at_bound", 0 or 1)
@@ -63,6 +65,9 @@ options:
                            each vertex's own tolerance, read from the vertex property NAME of
                            the PLY input (a scanner's per-point accuracy); 0 pins a vertex
   --fixed-border           vertices on the mesh's border do not move
+  --accurate               the accurate objective: closer to the true surface of a noisy scan,
+                           a little less fair (vertices then stay within 0.7 EPS); not for
+                           surfaces extracted from volumes
   --help                   this text
 )";
 
@@ -239,7 +244,7 @@ std::string read_radius_property(const std::string& in, const std::string& name,
 struct Options
 {
   std::vector<std::string> positional;
-  bool box = false, fixed_border = false, help = false;
+  bool box = false, fixed_border = false, accurate = false, help = false;
   std::string extents, radius_property, error;
 };
 
@@ -261,6 +266,8 @@ Options parse_options(int argc, char* argv[])
       o.box = true;
     else if(a == "--fixed-border")
       o.fixed_border = true;
+    else if(a == "--accurate")
+      o.accurate = true;
     else if(a == "--box-extents")
       value(o.extents);
     else if(a == "--radius-from-property")
@@ -319,10 +326,17 @@ int main(int argc, char* argv[])
   const bool eps_given = args.size() > 1 && !args[1].empty();
   std::string eps_text = eps_given ? args[1] : "0.25h";
   double epsilon = 0;
-  if(eps_given || (options.extents.empty() && options.radius_property.empty()))
+  if(eps_text == "auto")
+  {
+    epsilon = PMP::estimate_noise_level(mesh);
+    if(!(epsilon > 0))
+      return fail("cannot estimate the noise level of so small a mesh; give EPS");
+    eps_text = "auto: the estimated noise level, " + std::to_string(epsilon / mean_edge_length(mesh)) + "h";
+  }
+  else if(eps_given || (options.extents.empty() && options.radius_property.empty()))
   {
     if(!parse_epsilon(eps_text, mesh, epsilon))
-      return fail("EPS must be a number, or a number followed by h (got " + eps_text + ")");
+      return fail("EPS must be a number, a number followed by h, or auto (got " + eps_text + ")");
   }
   else
   {
@@ -339,6 +353,10 @@ int main(int argc, char* argv[])
             << (options.extents.empty() ? "" : ", half-extents " + options.extents)
             << (options.radius_property.empty() ? "" : ", per-vertex tolerance from " + options.radius_property)
             << (options.fixed_border ? ", border fixed" : "") << std::endl;
+  std::cout << "objective:   "
+            << (options.accurate ? "accurate (bending energy and fidelity, within 0.7 of each tolerance)"
+                                 : "fairest (bending energy)")
+            << std::endl;
 
   auto fixed = mesh.add_property_map<vertex_descriptor, bool>("v:fixed", false).first;
   if(options.fixed_border)
@@ -353,8 +371,10 @@ int main(int argc, char* argv[])
       put(radius, v, epsilon);
   const std::array<double, 3> half_extents =
     options.extents.empty() ? std::array<double, 3>{epsilon, epsilon, epsilon} : extents;
-  const auto common = CFP::vertex_tolerance_map(
-    radius, CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound).vertex_is_constrained_map(fixed)));
+  const auto common = CFP::fairing_objective(
+    options.accurate ? PMP::Constrained_fairing_objective::ACCURATE : PMP::Constrained_fairing_objective::FAIREST,
+    CFP::vertex_tolerance_map(radius, CFP::vertex_deviation_map(
+                                        deviation, CFP::vertex_at_bound_map(at_bound).vertex_is_constrained_map(fixed))));
 
   const auto start = std::chrono::steady_clock::now();
   const PMP::Constrained_fairing_result result =
@@ -367,13 +387,17 @@ int main(int argc, char* argv[])
   std::cout << "iterations:  " << result.number_of_iterations << " ("
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
             << ", " << result.number_of_energy_evaluations << " energy evaluations)" << std::endl;
-  std::cout << "energy:      " << result.initial_energy << " -> " << result.final_energy << std::endl;
+  std::cout << "energy:      " << result.initial_energy << " -> " << result.final_bending_energy;
+  if(options.accurate)
+    std::cout << " (objective with the fidelity term: " << result.final_energy << ")";
+  std::cout << std::endl;
   if(result.number_of_degenerate_edges > 0)
     std::cout << "degenerate:  " << result.number_of_degenerate_edges
               << " edges with a degenerate triangle, left out of the energy" << std::endl;
   const bool box = options.box || !options.extents.empty();
   std::cout << "deviation:   " << result.max_deviation << " at most ("
-            << (box ? "each coordinate within its box's half-extent" : "bound " + std::to_string(epsilon)) << "); "
+            << (box ? "each coordinate within its box's half-extent" : "bound " + std::to_string(epsilon))
+            << (options.accurate ? ", the solver's 0.7 of it" : "") << "); "
             << result.number_of_vertices_at_bound << " vertices at their bound, " << result.number_of_fixed_vertices
             << " fixed" << std::endl;
   std::cout << "time:        " << seconds.count() << " s" << std::endl;

@@ -43,10 +43,13 @@ struct Constrained_fairing_result
   std::size_t number_of_cg_iterations = 0;
   /// evaluations of the energy, with or without its gradient: the main cost of the default method
   std::size_t number_of_energy_evaluations = 0;
-  /// the bending energy of the input mesh
+  /// the objective's value on the input mesh: its bending energy (the fidelity term is 0 there)
   double initial_energy = 0;
-  /// the bending energy of the output mesh
+  /// the objective's value on the output mesh: the bending energy for
+  /// `Constrained_fairing_objective::FAIREST`, plus the fidelity term for `ACCURATE`
   double final_energy = 0;
+  /// the bending energy of the output mesh
+  double final_bending_energy = 0;
   /// the largest Euclidean distance of an output vertex to its input position
   double max_deviation = 0;
   /// the vertices that could move and ended on the boundary of their ball or box

@@ -38,6 +38,21 @@ enum class Constrained_fairing_method
   PROJECTED_GRADIENT
 };
 
+/// \ingroup PkgConstrainedFairingRef
+/// What `constrained_fairing()` minimizes inside the bound.
+enum class Constrained_fairing_objective
+{
+  /// The bending energy of Hildebrandt and Polthier: the fairest surface within the bound. The
+  /// default. Detail smaller than the bound is flattened, so the result may lie farther from
+  /// the true surface than the noise was.
+  FAIREST,
+  /// The bending energy plus a fidelity term, `mu / A * sum_i m_i |p_i - p0_i|^2 / t_i^2`
+  /// (`m_i` the input's lumped area at vertex `i`, `A` the total area, `t_i` its tolerance,
+  /// `mu` the `fidelity_weight`), minimized within 0.7 of each vertex's tolerance: closer to the
+  /// true surface, a little less fair. The user's bound holds as with `FAIREST`.
+  ACCURATE
+};
+
 namespace internal {
 namespace Constrained_fairing {
 
@@ -53,6 +68,8 @@ enum vertex_box_half_extents_map_t { vertex_box_half_extents_map };
 enum vertex_box_center_map_t { vertex_box_center_map };
 enum vertex_deviation_map_t { vertex_deviation_map };
 enum vertex_at_bound_map_t { vertex_at_bound_map };
+enum fairing_objective_t { fairing_objective };
+enum fidelity_weight_t { fidelity_weight };
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -107,6 +124,10 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_deviation_map)
 /// a writable property map from vertices to `bool`: whether the vertex ended on its bound
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_at_bound_map)
 
+/// what is minimized inside the bound, a `Constrained_fairing_objective`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fairing_objective)
+/// the weight of the fidelity term of the accurate objective, a `double`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fidelity_weight)
 #undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
 
 } // namespace constrained_fairing_parameters

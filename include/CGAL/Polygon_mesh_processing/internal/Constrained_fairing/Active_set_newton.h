@@ -13,7 +13,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_NEWTON_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_line_search.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Reduced_newton_direction.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
@@ -34,8 +34,10 @@ public:
   // lambda of the sufficient decrease condition (3)
   static constexpr double sufficient_decrease = 0.01;
 
-  // `energy` is the bending energy of `mesh`, set up on the input points.
-  Active_set_newton(const Hinge_mesh& mesh, const Bound& bound, Bending_energy& energy,
+  // `energy` is the objective on `mesh`, set up on the input points. The thin plate model of
+  // its Hessian leaves out the fidelity term of the accurate objective: a rougher model, which
+  // the line search makes up for.
+  Active_set_newton(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy,
                     const SparseLinearSolver& solver)
     : m_mesh(mesh), m_bound(bound), m_energy(energy), m_solver(solver)
   {}
@@ -122,7 +124,7 @@ public:
 private:
   const Hinge_mesh& m_mesh;
   const Bound& m_bound;
-  Bending_energy& m_energy;
+  Fairing_objective& m_energy;
   SparseLinearSolver m_solver;
   std::unique_ptr<Thin_plate_hessian<SparseLinearSolver> > m_hessian;
   Active_set<Bound> m_active;

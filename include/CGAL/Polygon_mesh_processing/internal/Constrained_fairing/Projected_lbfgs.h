@@ -31,7 +31,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_line_search.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
@@ -57,7 +57,7 @@ public:
   // the longest move of a vertex in one step, relative to its reach (Vertex_scales)
   static constexpr double reach_fraction = 0.5;
 
-  Projected_lbfgs(const Bound& bound, Bending_energy& energy) : m_bound(bound), m_energy(energy) {}
+  Projected_lbfgs(const Bound& bound, Fairing_objective& energy) : m_bound(bound), m_energy(energy) {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
   // cancels.
@@ -198,7 +198,7 @@ private:
   }
 
   const Bound& m_bound;
-  Bending_energy& m_energy;
+  Fairing_objective& m_energy;
   Active_set<Bound> m_active;
   Projected_line_search m_search;
   // gradient, direction, next point and its gradient

@@ -15,7 +15,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <cstddef>
@@ -44,7 +44,7 @@ public:
   // The paper's search from t0. `holds(energy, point)` is the descent condition. Returns
   // true and fills `accepted` on success.
   template <typename Bound, typename Condition>
-  bool search(const Points& x, const Points& v, double t0, const Bound& bound, Bending_energy& energy,
+  bool search(const Points& x, const Points& v, double t0, const Bound& bound, Fairing_objective& energy,
               const Condition& holds, Accepted& accepted)
   {
     double t = t0;
@@ -76,11 +76,11 @@ public:
   // <g, v>: each rejected step t is followed by the minimizer of the quadratic through E0,
   // that slope and the rejected energy, kept within [t/10, t/2]. The trial points are written
   // straight to `accepted.point`, with the gradient and the vertex scales
-  // (Bending_energy::value_and_gradient()) to G and scales, so that the accepted one needs no
+  // (Fairing_objective::value_and_gradient()) to G and scales, so that the accepted one needs no
   // copy; on failure, all three hold the last rejected trial.
   template <typename Bound, typename Condition>
   bool backtrack(const Points& x, const Points& v, double t0, double E0, double slope, const Bound& bound,
-                 Bending_energy& energy, const Condition& holds, Accepted& accepted, Points& G, Vertex_scales& scales)
+                 Fairing_objective& energy, const Condition& holds, Accepted& accepted, Points& G, Vertex_scales& scales)
   {
     double t = t0;
     for(int k = 0; k < max_halvings; ++k)
@@ -112,7 +112,7 @@ public:
 
 private:
   template <typename Bound, typename Condition>
-  bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Bending_energy& energy,
+  bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Fairing_objective& energy,
                 const Condition& holds)
   {
     m_trial.noalias() = x + t * v;

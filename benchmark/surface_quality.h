@@ -1,0 +1,109 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What users judge a faired noisy mesh by, when its clean original (same connectivity) is known:
+// the bound as they check it, in double; the RMS distance of the vertices to the clean
+// *surface* (sliding along the surface is harmless); the mean angle between corresponding face
+// normals; the smallest triangle angle; and the folds, faces whose normal is more than 90
+// degrees from the clean one.
+
+#ifndef CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H
+#define CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H
+
+#include "benchmark_support.h"
+
+#include <CGAL/version_macros.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_tree.h>
+#if CGAL_VERSION_MAJOR >= 6
+#include <CGAL/AABB_traits_3.h>
+#else
+#include <CGAL/AABB_traits.h>
+#endif
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace benchmark {
+
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+#if CGAL_VERSION_MAJOR >= 6
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<K, Primitive> >;
+#else
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> >;
+#endif
+
+struct Quality
+{
+  double max_distance = 0;   // Euclidean, to the input position
+  double max_coordinate = 0; // largest per-coordinate offset
+  bool ball_holds = true, box_holds = true;
+  double energy = 0, surface_rms = 0, normal_error_deg = 0, min_angle_deg = 180;
+  std::size_t folds = 0;
+};
+
+inline double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
+{
+  const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
+  return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI;
+}
+
+// The clean mesh and its distance tree.
+struct Clean_surface
+{
+  const Mesh& mesh;
+  Tree tree;
+
+  explicit Clean_surface(const Mesh& clean) : mesh(clean), tree(faces(clean).first, faces(clean).second, clean)
+  {
+    tree.accelerate_distance_queries();
+  }
+};
+
+// `result` and `input` have the clean mesh's connectivity; `eps` is the bound checked.
+inline Quality measure(const Mesh& result, const Mesh& input, const Clean_surface& clean, double eps, double energy)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Quality q;
+  q.energy = energy;
+  double sum2 = 0;
+  for(auto v : vertices(result))
+  {
+    const Point& p = result.point(v);
+    const Point& p0 = input.point(v);
+    const double d2 = CGAL::squared_distance(p, p0);
+    q.max_distance = (std::max)(q.max_distance, std::sqrt(d2));
+    q.ball_holds = q.ball_holds && d2 <= eps * eps && std::sqrt(d2) <= eps;
+    for(int c = 0; c < 3; ++c)
+    {
+      const double dc = std::abs(p[c] - p0[c]);
+      q.max_coordinate = (std::max)(q.max_coordinate, dc);
+      q.box_holds = q.box_holds && dc <= eps;
+    }
+    sum2 += clean.tree.squared_distance(p);
+  }
+  q.surface_rms = std::sqrt(sum2 / double(num_vertices(result)));
+
+  double normal_sum = 0;
+  for(auto f : faces(result))
+  {
+    const auto n = PMP::compute_face_normal(f, result);
+    const auto n_clean = PMP::compute_face_normal(f, clean.mesh);
+    normal_sum += angle_deg(n, n_clean);
+    if(n * n_clean < 0)
+      ++q.folds;
+    const auto h = halfedge(f, result);
+    const Point a = result.point(source(h, result)), b = result.point(target(h, result)),
+                c = result.point(target(next(h, result), result));
+    q.min_angle_deg =
+      (std::min)({q.min_angle_deg, angle_deg(b - a, c - a), angle_deg(a - b, c - b), angle_deg(a - c, b - c)});
+  }
+  q.normal_error_deg = normal_sum / double(num_faces(result));
+  return q;
+}
+
+} // namespace benchmark
+
+#endif // CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H

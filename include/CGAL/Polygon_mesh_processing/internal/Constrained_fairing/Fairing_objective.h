@@ -1,0 +1,112 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The function the solvers minimize: the bending energy (Bending_energy.h), plus, for the
+// accurate objective, a fidelity term that keeps the surface near the input inside its band:
+//
+//   F = mu / A * sum_i m_i |x_i - x0_i|^2 / t_i^2,
+//
+// m_i the input's lumped area at vertex i (a third of its triangles' areas), A the total area
+// and t_i the vertex's tolerance. F is dimensionless like the bending energy, and is mu when
+// every vertex sits at its tolerance. Why: the bending energy is scale-invariant and does not
+// care where in its band the surface sits, so its minimum flattens real detail up to the
+// bound; F makes a vertex pay for moving farther than the noise asks (see the user manual for
+// the measurements).
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+class Fairing_objective
+{
+public:
+  // X0: the input points, kept by reference.
+  Fairing_objective(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_X0(X0), m_bending(mesh, X0) {}
+
+  // Adds the fidelity term of weight mu; `tolerance(i)` is vertex i's tolerance (no term for
+  // a vertex of tolerance 0, which does not move).
+  template <typename Tolerance>
+  void add_fidelity(double mu, const Tolerance& tolerance)
+  {
+    const std::size_t n = m_mesh.number_of_vertices;
+    m_weight.assign(n, 0.);
+    double area = 0;
+    for(const auto& t : m_mesh.triangles)
+    {
+      const double a =
+        0.5 * (point(m_X0, t[1]) - point(m_X0, t[0])).cross(point(m_X0, t[2]) - point(m_X0, t[0])).norm();
+      area += a;
+      for(Index v : t)
+        m_weight[v] += a / 3;
+    }
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double t = tolerance(i);
+      m_weight[i] = t > 0 && area > 0 ? mu * m_weight[i] / (area * t * t) : 0;
+    }
+  }
+
+  bool is_defined() const { return m_bending.is_defined(); }
+  std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
+
+  double bending_energy(const Points& X) { return m_bending.value(X); }
+
+  double value(const Points& X) { return m_bending.value(X) + fidelity(X); }
+
+  // As Bending_energy::value_and_gradient(); the fidelity term adds 2 w_i (x_i - x0_i) to the
+  // gradient and 2 w_i to the stiffness, in every direction.
+  double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales = nullptr)
+  {
+    const double bending = m_bending.value_and_gradient(X, G, scales);
+    if(m_weight.empty())
+      return bending;
+    parallel_for_blocks(m_weight.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const double k = 2 * m_weight[i];
+        point(G, i) += k * (point(X, i) - point(m_X0, i));
+        if(scales)
+          scales->stiffness[static_cast<Eigen::Index>(i)] += k;
+      }
+    });
+    return bending + fidelity(X);
+  }
+
+private:
+  double fidelity(const Points& X)
+  {
+    if(m_weight.empty())
+      return 0;
+    return parallel_sum(m_weight.size(), m_partial, [&](std::size_t begin, std::size_t end) {
+      double sum = 0;
+      for(std::size_t i = begin; i < end; ++i)
+        sum += m_weight[i] * (point(X, i) - point(m_X0, i)).squaredNorm();
+      return sum;
+    });
+  }
+
+  const Hinge_mesh& m_mesh;
+  const Points& m_X0;
+  Bending_energy m_bending;
+  std::vector<double> m_weight; // empty without the fidelity term
+  std::vector<double> m_partial;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
