@@ -43,7 +43,8 @@ struct Constrained_fairing_result
   std::size_t number_of_cg_iterations = 0;
   /// evaluations of the energy, with or without its gradient: the main cost of the default method
   std::size_t number_of_energy_evaluations = 0;
-  /// the objective's value on the input mesh: its bending energy (the fidelity term is 0 there)
+  /// the objective's value on the input mesh: its bending energy, plus the fidelity term for
+  /// `Constrained_fairing_objective::ACCURATE`
   double initial_energy = 0;
   /// the objective's value on the output mesh: the bending energy for
   /// `Constrained_fairing_objective::FAIREST`, plus the fidelity term for `ACCURATE`
@@ -57,6 +58,13 @@ struct Constrained_fairing_result
   /// the vertices that did not move because they are fixed (`vertex_is_constrained_map`, a
   /// tolerance of 0) or, for a face range, outside it or on its border
   std::size_t number_of_fixed_vertices = 0;
+  /// the faces still turned over against their neighbours at the end (the normal opposite the
+  /// sum of the neighbours' area-weighted normals), among those with a vertex that could move
+  std::size_t number_of_folded_faces = 0;
+  /// the folded faces that the fold repair undid: after the descent, the vertices of the folds
+  /// and their neighbours are re-seeded and the descent resumes, kept if the objective is not
+  /// higher and fewer faces are folded
+  std::size_t number_of_unfolded_faces = 0;
   /// the interior edges left out of the energy because one of their two triangles is
   /// degenerate (of nearly zero area) in the input
   std::size_t number_of_degenerate_edges = 0;

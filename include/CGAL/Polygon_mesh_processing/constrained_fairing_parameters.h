@@ -46,10 +46,13 @@ enum class Constrained_fairing_objective
   /// default. Detail smaller than the bound is flattened, so the result may lie farther from
   /// the true surface than the noise was.
   FAIREST,
-  /// The bending energy plus a fidelity term, `mu / A * sum_i m_i |p_i - p0_i|^2 / t_i^2`
+  /// The bending energy plus a fidelity term, `mu / A * sum_i m_i |p_i - a_i|^2 / t_i^2`
   /// (`m_i` the input's lumped area at vertex `i`, `A` the total area, `t_i` its tolerance,
-  /// `mu` the `fidelity_weight`), minimized within 0.7 of each vertex's tolerance: closer to the
-  /// true surface, a little less fair. The user's bound holds as with `FAIREST`.
+  /// `mu` the `fidelity_weight`), `a_i` the vertex's position after 16 steps of Taubin's
+  /// smoothing of the input, each step followed by a move back into the bound: the smoothing
+  /// keeps the detail larger than the noise, and the bending energy removes what it leaves.
+  /// Closer to the true surface of a noisy scan, a little less fair; the bound holds as with
+  /// `FAIREST`.
   ACCURATE
 };
 

@@ -2,16 +2,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus, for the
-// accurate objective, a fidelity term that keeps the surface near the input inside its band:
+// accurate objective, a fidelity term that keeps the surface near an anchor a_i:
 //
-//   F = mu / A * sum_i m_i |x_i - x0_i|^2 / t_i^2,
+//   F = mu / A * sum_i m_i |x_i - a_i|^2 / t_i^2,
 //
 // m_i the input's lumped area at vertex i (a third of its triangles' areas), A the total area
 // and t_i the vertex's tolerance. F is dimensionless like the bending energy, and is mu when
-// every vertex sits at its tolerance. Why: the bending energy is scale-invariant and does not
-// care where in its band the surface sits, so its minimum flattens real detail up to the
-// bound; F makes a vertex pay for moving farther than the noise asks (see the user manual for
-// the measurements).
+// every vertex is its tolerance away from its anchor. Why: the bending energy is
+// scale-invariant and does not care where in its band the surface sits, so its minimum
+// flattens real detail up to the bound. The anchor is a low-pass estimate of the surface (the
+// caller's choice; see constrained_fairing.h), which keeps the detail larger than the noise,
+// while the bending energy removes what the low-pass filter leaves.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
@@ -35,11 +36,12 @@ public:
   // X0: the input points, kept by reference.
   Fairing_objective(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_X0(X0), m_bending(mesh, X0) {}
 
-  // Adds the fidelity term of weight mu; `tolerance(i)` is vertex i's tolerance (no term for
-  // a vertex of tolerance 0, which does not move).
+  // Adds the fidelity term of weight mu towards `anchor` (kept by reference); `tolerance(i)`
+  // is vertex i's tolerance (no term for a vertex of tolerance 0, which does not move).
   template <typename Tolerance>
-  void add_fidelity(double mu, const Tolerance& tolerance)
+  void add_fidelity(double mu, const Tolerance& tolerance, const Points& anchor)
   {
+    m_anchor = &anchor;
     const std::size_t n = m_mesh.number_of_vertices;
     m_weight.assign(n, 0.);
     double area = 0;
@@ -76,7 +78,7 @@ public:
       for(std::size_t i = begin; i < end; ++i)
       {
         const double k = 2 * m_weight[i];
-        point(G, i) += k * (point(X, i) - point(m_X0, i));
+        point(G, i) += k * (point(X, i) - point(*m_anchor, i));
         if(scales)
           scales->stiffness[static_cast<Eigen::Index>(i)] += k;
       }
@@ -92,13 +94,14 @@ private:
     return parallel_sum(m_weight.size(), m_partial, [&](std::size_t begin, std::size_t end) {
       double sum = 0;
       for(std::size_t i = begin; i < end; ++i)
-        sum += m_weight[i] * (point(X, i) - point(m_X0, i)).squaredNorm();
+        sum += m_weight[i] * (point(X, i) - point(*m_anchor, i)).squaredNorm();
       return sum;
     });
   }
 
   const Hinge_mesh& m_mesh;
   const Points& m_X0;
+  const Points* m_anchor = nullptr;
   Bending_energy m_bending;
   std::vector<double> m_weight; // empty without the fidelity term
   std::vector<double> m_partial;

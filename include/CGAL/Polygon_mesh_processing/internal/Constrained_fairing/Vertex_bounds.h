@@ -142,26 +142,16 @@ public:
     return h.cwiseMin(tolerance(i)).maxCoeff();
   }
 
-  // Makes the solver's bounds `fraction` (at most 1) of the sizes asked, around the input
-  // position: the user's bounds then hold with room. Boxes given a centre keep their size, since
-  // the input position may lie anywhere in them.
-  void shrink(double fraction) { m_fraction = fraction; }
-
   Ball_bound ball(const Points& X0) const
   {
-    if(m_tolerance.empty())
-      return Ball_bound(X0, m_fraction * m_epsilon);
-    std::vector<double> sizes = m_tolerance;
-    for(double& t : sizes)
-      t *= m_fraction;
-    return Ball_bound(X0, Vertex_sizes(std::move(sizes)));
+    return m_tolerance.empty() ? Ball_bound(X0, m_epsilon) : Ball_bound(X0, Vertex_sizes(m_tolerance));
   }
 
   Box_bound box(const Points& X0) const
   {
     const auto half_extents = [&](std::size_t i) {
       const Eigen::Vector3d h = m_extents.rows() > 0 ? Eigen::Vector3d(point(m_extents, i)) : m_uniform_extents;
-      return Eigen::Vector3d((m_centre.rows() > 0 ? 1 : m_fraction) * h.cwiseMin(tolerance(i)));
+      return Eigen::Vector3d(h.cwiseMin(tolerance(i)));
     };
     const auto centre = [&](std::size_t i) {
       return Eigen::Vector3d(m_centre.rows() > 0 && tolerance(i) > 0 ? point(m_centre, i) : point(X0, i));
@@ -189,7 +179,7 @@ private:
   }
 
   bool m_box = false;
-  double m_epsilon = 0, m_fraction = 1;
+  double m_epsilon = 0;
   std::vector<double> m_tolerance; // empty: epsilon for every vertex
   Eigen::Vector3d m_uniform_extents;
   Points m_extents, m_centre;      // empty: m_uniform_extents, the input points
