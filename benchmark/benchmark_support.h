@@ -1,17 +1,24 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// What the benchmark programs share: the mesh type, seeded noise, the mean edge length and
-// median timing.
+// What the benchmark programs share: the mesh type, seeded noise, the mean edge length, the
+// CHOLMOD solver type and median timing.
 
 #ifndef CGAL_CONSTRAINED_FAIRING_BENCHMARK_SUPPORT_H
 #define CGAL_CONSTRAINED_FAIRING_BENCHMARK_SUPPORT_H
 
+#include "../test/seeded_noise.h"
+
+#include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -26,28 +33,14 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
-inline double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : edges(mesh))
-    sum += CGAL::Polygon_mesh_processing::edge_length(e, mesh);
-  return sum / double(num_edges(mesh));
-}
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
+using test::add_noise;
 
-// Moves every vertex uniformly at random inside a ball of the given radius.
-inline void add_noise(Mesh& mesh, double radius, unsigned int seed)
-{
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  for(auto v : vertices(mesh))
-  {
-    K::Vector_3 d;
-    do
-      d = K::Vector_3(u(rng), u(rng), u(rng));
-    while(d.squared_length() > 1);
-    mesh.point(v) = mesh.point(v) + radius * d;
-  }
-}
+#ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
+// The paper's Newton method with CHOLMOD's supernodal Cholesky factorization.
+using Cholmod_solver =
+  CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
+#endif
 
 // The large test cases: `base` Loop subdivided `levels` times (CGAL's Subdivision_method_3),
 // then seeded uniform-ball noise of radius 0.25 h, h the subdivided mesh's mean edge length.

@@ -25,10 +25,6 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
-#ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -168,7 +164,7 @@ int main(int argc, char* argv[])
     return PMP::constrained_fairing(m, eps, CFP::deviation_bound(PMP::Deviation_bound::BOX));
   });
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-  using Cholmod = CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
+  using Cholmod = benchmark::Cholmod_solver;
   run_mode("ball, Newton (CHOLMOD)", [&](Mesh& m) {
     return PMP::constrained_fairing(m, eps,
                                     CFP::fairing_method(PMP::Constrained_fairing_method::ACTIVE_SET_NEWTON,

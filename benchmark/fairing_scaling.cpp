@@ -29,10 +29,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_order.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 
-#ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
-
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -113,8 +109,7 @@ int main(int argc, char* argv[])
     CF::Bending_energy energy(mesh, X0);
     evaluation = benchmark::median_seconds(std::max(runs, 5), [&] { energy.value_and_gradient(X0, G, &K); });
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-    using Cholmod =
-      CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
+    using Cholmod = benchmark::Cholmod_solver;
     factorization = benchmark::median_of(runs, [&] {
       CF::Thin_plate_hessian<Cholmod> S(mesh, X0, Cholmod());
       const auto start = std::chrono::steady_clock::now();

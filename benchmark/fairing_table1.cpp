@@ -21,10 +21,6 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
-#ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
-
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -122,8 +118,7 @@ int main(int argc, char* argv[])
     std::cout << " or " << time_limit << " s";
   std::cout << "; the default call: median of " << arguments.runs << " runs\n";
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
-  using Newton_solver =
-    CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
+  using Newton_solver = benchmark::Cholmod_solver;
   std::cout << "the Newton method factorizes with CHOLMOD (supernodal)\n";
 #else
   using Newton_solver = PMP::internal::Constrained_fairing::Default_sparse_linear_solver;

@@ -6,7 +6,10 @@
 #ifndef CGAL_CONSTRAINED_FAIRING_TEST_SUPPORT_H
 #define CGAL_CONSTRAINED_FAIRING_TEST_SUPPORT_H
 
+#include "seeded_noise.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -87,23 +90,6 @@ PolygonMesh plane_patch(std::size_t n)
       }
     }
   return m;
-}
-
-// Moves every vertex uniformly at random inside a ball of radius r (seeded).
-template <typename PolygonMesh>
-void add_noise(PolygonMesh& m, double r, unsigned int seed)
-{
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  auto vpm = get(CGAL::vertex_point, m);
-  for(auto v : vertices(m))
-  {
-    Vector d;
-    do
-      d = Vector(u(rng), u(rng), u(rng));
-    while(d.squared_length() > 1);
-    put(vpm, v, get(vpm, v) + r * d);
-  }
 }
 
 template <typename PolygonMesh>
@@ -211,13 +197,7 @@ double bound_violation(const std::vector<Point>& out, const std::vector<Point>& 
   return violation;
 }
 
-inline double mean_edge_length(const Mesh& m)
-{
-  double sum = 0;
-  for(auto e : edges(m))
-    sum += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
-  return sum / double(num_edges(m));
-}
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
 
 } // namespace test
 

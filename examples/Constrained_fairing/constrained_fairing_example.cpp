@@ -1,427 +1,56 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Fairs a mesh while keeping every vertex within epsilon of its input position.
+// Fairs a noisy mesh: its bending energy is minimized while every vertex stays within epsilon
+// of its input position. Writes faired.off.
 //
-//   constrained_fairing_example [OPTIONS] [IN] [EPS] [OUT]
+//   constrained_fairing_example [IN] [EPS]
 //
-// The arguments and options are described by `usage` below (--help prints it). On bad input
-// or any failure, prints one line starting with "error:" and returns non-zero, and writes
-// nothing: the output is written to a temporary file, renamed to OUT once complete.
+// EPS defaults to a quarter of the mean edge length. The tool `constrained_fairing` does the
+// same on any file, with every option.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
-#include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/version_macros.h>
 
-#include <algorithm>
-#include <array>
-#include <chrono>
-#include <cmath>
-#include <cstdint>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <optional>
-#include <sstream>
 #include <string>
-#include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
-namespace CFP = PMP::constrained_fairing_parameters;
-using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
-
-const char* const usage = R"(usage: constrained_fairing_example [OPTIONS] [IN] [EPS] [OUT]
-
-Fairs a triangle mesh: minimizes its bending energy while every vertex stays within EPS of its
-input position (Hildebrandt and Polthier, SGP 2007).
-
-  IN    a triangle mesh in any format CGAL reads (OFF, OBJ, PLY, STL); default: the bundled
-        noisy elephant
-  EPS   the tolerance, absolute (0.002), relative to the mean edge length h (0.25h), or auto:
-        the noise level estimated from the mesh itself; it caps every other size below.
-        Default: 0.25h, or the largest size the options give (then IN OUT may be given
-        without EPS)
-  OUT   where to write the result (.off, .obj, .ply or .stl), full precision; default
-        faired.off. A .ply also gets each vertex's distance to its input position (vertex
-        property "deviation") and whether it ended on its bound ("at_bound", 0 or 1)
-
-options:
-  --box                    each coordinate within EPS of its input value (a cube) instead of
-                           the ball of radius EPS
-  --box-extents HX,HY,HZ   a box of these half-extents around each vertex (a voxel's half
-                           size, for surfaces extracted from volumes; implies --box)
-  --radius-from-property NAME
-                           each vertex's own tolerance, read from the vertex property NAME of
-                           the PLY input (a scanner's per-point accuracy); 0 pins a vertex
-  --fixed-border           vertices on the mesh's border do not move
-  --accurate               the accurate objective: closer to the true surface of a noisy scan,
-                           a little less fair (vertices then stay within 0.7 EPS); not for
-                           surfaces extracted from volumes
-  --help                   this text
-)";
-
-double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : edges(mesh))
-    sum += PMP::edge_length(e, mesh);
-  return sum / double(num_edges(mesh));
-}
-
-// "0.002" is absolute, "0.25h" is 0.25 times the mean edge length. Returns false if malformed.
-bool parse_epsilon(const std::string& text, const Mesh& mesh, double& epsilon)
-{
-  const bool relative = !text.empty() && text.back() == 'h';
-  const std::string number = relative ? text.substr(0, text.size() - 1) : text;
-  std::size_t used = 0;
-  try
-  {
-    epsilon = std::stod(number, &used);
-  }
-  catch(const std::exception&)
-  {
-    return false;
-  }
-  if(used != number.size())
-    return false;
-  if(relative)
-    epsilon *= mean_edge_length(mesh);
-  return true;
-}
-
-using Polygon = std::vector<std::size_t>;
-
-// CGAL's readers and writers explain failures on std::cerr; this keeps their words for our
-// one-line message.
-class Captured_cerr
-{
-public:
-  Captured_cerr() : m_saved(std::cerr.rdbuf(m_text.rdbuf())) {}
-  ~Captured_cerr() { std::cerr.rdbuf(m_saved); }
-  // ": what CGAL said", on one line, or nothing
-  std::string reason() const
-  {
-    std::string text = m_text.str();
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    while(!text.empty() && text.back() == ' ')
-      text.pop_back();
-    return text.empty() ? text : " (" + text + ")";
-  }
-
-private:
-  std::ostringstream m_text;
-  std::streambuf* m_saved;
-};
-
-// Why a polygon soup that reads fine is no polygon mesh.
-std::string soup_defect(const std::vector<Polygon>& polygons)
-{
-  std::vector<std::array<std::size_t, 3> > edges; // (smaller, larger, direction) of each side
-  for(const Polygon& p : polygons)
-  {
-    if(p.size() < 3)
-      return "a face has fewer than 3 vertices";
-    for(std::size_t k = 0; k < p.size(); ++k)
-    {
-      const std::size_t a = p[k], b = p[(k + 1) % p.size()];
-      if(std::count(p.begin(), p.end(), a) > 1)
-        return "a face uses vertex " + std::to_string(a) + " twice";
-      edges.push_back({(std::min)(a, b), (std::max)(a, b), std::size_t(a < b)});
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  for(std::size_t i = 0, j = 0; i < edges.size(); i = j)
-  {
-    while(j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
-      ++j;
-    const std::string edge = "the edge between vertices " + std::to_string(edges[i][0]) + " and " + std::to_string(edges[i][1]);
-    if(j - i > 2)
-      return edge + " has " + std::to_string(j - i) + " faces (a non-manifold edge)";
-    if(j - i == 2 && edges[i][2] == edges[i + 1][2])
-      return "two faces run along " + edge + " in the same direction (inconsistent orientation)";
-  }
-  return "the faces around some vertex form more than one fan (a non-manifold vertex)";
-}
-
-// Reads a mesh from any format CGAL reads. Returns an empty string or the reason it failed.
-std::string read_mesh(const std::string& in, Mesh& mesh)
-{
-  std::vector<K::Point_3> points;
-  std::vector<Polygon> polygons;
-  Captured_cerr cgal;
-  if(!CGAL::IO::read_polygon_soup(in, points, polygons))
-    return "cannot read " + in + " as an OFF, OBJ, PLY or STL mesh" + cgal.reason();
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t i : polygons[f])
-      if(i >= points.size())
-        return "face " + std::to_string(f) + " of " + in + " refers to vertex " + std::to_string(i) + ", but there are " +
-               std::to_string(points.size()) + " vertices";
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    return in + " is not a manifold, consistently oriented mesh: " + soup_defect(polygons);
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  return std::string();
-}
-
-bool writable_format(const std::string& out)
-{
-  const std::string ext = std::filesystem::path(out).extension().string();
-  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl";
-}
-
-// Writes to a temporary file beside `out`, renamed to `out` once complete. Returns an empty
-// string or the reason it failed.
-std::string write_mesh(const std::string& out, const Mesh& mesh)
-{
-  std::filesystem::path partial(out);
-  partial.replace_filename("." + partial.stem().string() + ".partial" + partial.extension().string());
-  std::error_code error;
-  Captured_cerr cgal;
-  if(CGAL::IO::write_polygon_mesh(partial.string(), mesh, CGAL::parameters::stream_precision(17)))
-  {
-    std::filesystem::rename(partial, out, error);
-    if(!error)
-      return std::string();
-  }
-  std::error_code ignored;
-  std::filesystem::remove(partial, ignored);
-  return "cannot write " + out + (error ? " (" + error.message() + ")" : cgal.reason());
-}
-
-// Parses "HX,HY,HZ" (three non-negative numbers). Returns false if malformed.
-bool parse_extents(const std::string& text, std::array<double, 3>& h)
-{
-  std::istringstream in(text);
-  char comma1 = 0, comma2 = 0;
-  if(!(in >> h[0] >> comma1 >> h[1] >> comma2 >> h[2]) || comma1 != ',' || comma2 != ',' || !in.eof())
-    return false;
-  return std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x) && x >= 0; });
-}
-
-// The vertex property `name` of `m` with values of type T, if there is one (CGAL 6 returns an
-// optional map, CGAL 5 a pair).
-template <typename T>
-std::optional<Mesh::Property_map<vertex_descriptor, T> > find_property(const Mesh& m, const std::string& name)
-{
-#if CGAL_VERSION_MAJOR >= 6
-  return m.property_map<vertex_descriptor, T>(name);
-#else
-  const auto found = m.property_map<vertex_descriptor, T>(name);
-  return found.second ? std::make_optional(found.first) : std::nullopt;
-#endif
-}
-
-// Reads the vertex property `name` of the PLY file `in` into `radius`, by vertex number.
-std::string read_radius_property(const std::string& in, const std::string& name, const Mesh& mesh,
-                                 Mesh::Property_map<vertex_descriptor, double>& radius)
-{
-  Mesh with_properties;
-  std::ifstream stream(in, std::ios::binary);
-  Captured_cerr cgal;
-  if(std::filesystem::path(in).extension() != ".ply" || !CGAL::IO::read_PLY(stream, with_properties))
-    return "--radius-from-property needs a PLY input (" + in + ")";
-  if(num_vertices(with_properties) != num_vertices(mesh))
-    return "the vertices of " + in + " read as a PLY mesh differ from its points";
-  const auto as_double = find_property<double>(with_properties, "v:" + name);
-  const auto as_float = find_property<float>(with_properties, "v:" + name);
-  if(!as_double && !as_float)
-    return in + " has no float or double vertex property " + name;
-  for(vertex_descriptor v : vertices(mesh))
-    put(radius, v, as_double ? get(*as_double, v) : double(get(*as_float, v)));
-  return std::string();
-}
-
-struct Options
-{
-  std::vector<std::string> positional;
-  bool box = false, fixed_border = false, accurate = false, help = false;
-  std::string extents, radius_property, error;
-};
-
-Options parse_options(int argc, char* argv[])
-{
-  Options o;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    const auto value = [&](std::string& target) {
-      if(i + 1 < argc)
-        target = argv[++i];
-      else
-        o.error = a + " needs a value";
-    };
-    if(a == "--help" || a == "-h")
-      o.help = true;
-    else if(a == "--box")
-      o.box = true;
-    else if(a == "--fixed-border")
-      o.fixed_border = true;
-    else if(a == "--accurate")
-      o.accurate = true;
-    else if(a == "--box-extents")
-      value(o.extents);
-    else if(a == "--radius-from-property")
-      value(o.radius_property);
-    else if(a.size() > 2 && a.compare(0, 2, "--") == 0)
-      o.error = "unknown option " + a + " (see --help)";
-    else
-      o.positional.push_back(a);
-  }
-  // IN OUT, EPS left out
-  if(o.positional.size() == 2 && writable_format(o.positional[1]))
-    o.positional.insert(o.positional.begin() + 1, std::string());
-  if(o.positional.size() > 3)
-    o.error = "too many arguments (see --help)";
-  return o;
-}
-
-int fail(const std::string& message)
-{
-  std::cerr << "error: " << message << std::endl;
-  return EXIT_FAILURE;
-}
 
 int main(int argc, char* argv[])
 {
-  const Options options = parse_options(argc, argv);
-  if(options.help)
-  {
-    std::cout << usage;
-    return EXIT_SUCCESS;
-  }
-  if(!options.error.empty())
-    return fail(options.error);
-  const auto& args = options.positional;
-  const std::string in = args.size() > 0 ? args[0] : CGAL_CONSTRAINED_FAIRING_DATA_DIR "/elephant_noisy.off";
-  const std::string out = args.size() > 2 ? args[2] : "faired.off";
-
-  if(!writable_format(out))
-    return fail("OUT must end with .off, .obj, .ply or .stl (got " + out + ")");
-  std::array<double, 3> extents{0, 0, 0};
-  if(!options.extents.empty() && !parse_extents(options.extents, extents))
-    return fail("--box-extents must be three non-negative numbers HX,HY,HZ (got " + options.extents + ")");
+  const std::string in = argc > 1 ? argv[1] : CGAL_CONSTRAINED_FAIRING_DATA_DIR "/elephant_noisy.off";
   Mesh mesh;
-  const std::string read_error = read_mesh(in, mesh);
-  if(!read_error.empty())
-    return fail(read_error);
-  auto radius = mesh.add_property_map<vertex_descriptor, double>("v:radius", 0.).first;
-  if(!options.radius_property.empty())
+  if(!CGAL::IO::read_polygon_mesh(in, mesh) || !CGAL::is_triangle_mesh(mesh))
   {
-    const std::string error = read_radius_property(in, options.radius_property, mesh, radius);
-    if(!error.empty())
-      return fail(error);
+    std::cerr << "error: cannot read a triangle mesh from " << in << std::endl;
+    return EXIT_FAILURE;
+  }
+  double epsilon = argc > 2 ? std::stod(argv[2]) : 0;
+  if(epsilon == 0)
+  {
+    double sum = 0;
+    for(auto e : edges(mesh))
+      sum += PMP::edge_length(e, mesh);
+    epsilon = 0.25 * sum / double(num_edges(mesh));
   }
 
-  // EPS caps every size; without it, the largest size the options give, or 0.25h.
-  const bool eps_given = args.size() > 1 && !args[1].empty();
-  std::string eps_text = eps_given ? args[1] : "0.25h";
-  double epsilon = 0;
-  if(eps_text == "auto")
-  {
-    epsilon = PMP::estimate_noise_level(mesh);
-    if(!(epsilon > 0))
-      return fail("cannot estimate the noise level of so small a mesh; give EPS");
-    eps_text = "auto: the estimated noise level, " + std::to_string(epsilon / mean_edge_length(mesh)) + "h";
-  }
-  else if(eps_given || (options.extents.empty() && options.radius_property.empty()))
-  {
-    if(!parse_epsilon(eps_text, mesh, epsilon))
-      return fail("EPS must be a number, a number followed by h, or auto (got " + eps_text + ")");
-  }
-  else
-  {
-    epsilon = options.extents.empty() ? 0 : *std::max_element(extents.begin(), extents.end());
-    for(vertex_descriptor v : vertices(mesh))
-      if(!options.radius_property.empty() && get(radius, v) > epsilon)
-        epsilon = get(radius, v);
-    eps_text = "the largest size given";
-  }
-  std::cout << "input:       " << in << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
-            << " faces" << std::endl;
-  std::cout << "epsilon:     " << epsilon << " (" << eps_text << ")" << std::endl;
-  std::cout << "bound:       " << (options.box || !options.extents.empty() ? "box" : "ball")
-            << (options.extents.empty() ? "" : ", half-extents " + options.extents)
-            << (options.radius_property.empty() ? "" : ", per-vertex tolerance from " + options.radius_property)
-            << (options.fixed_border ? ", border fixed" : "") << std::endl;
-  std::cout << "objective:   "
-            << (options.accurate ? "accurate (bending energy and fidelity, within 0.7 of each tolerance)"
-                                 : "fairest (bending energy)")
-            << std::endl;
-
-  auto fixed = mesh.add_property_map<vertex_descriptor, bool>("v:fixed", false).first;
-  if(options.fixed_border)
-    for(vertex_descriptor v : vertices(mesh))
-      put(fixed, v, static_cast<bool>(CGAL::is_border(v, mesh)));
-  auto deviation = mesh.add_property_map<vertex_descriptor, double>("v:deviation", 0.).first;
-  auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
-  // Every option is passed, each in its neutral form when not asked for: a tolerance of
-  // epsilon for all, the cube of half-side epsilon.
-  if(options.radius_property.empty())
-    for(vertex_descriptor v : vertices(mesh))
-      put(radius, v, epsilon);
-  const std::array<double, 3> half_extents =
-    options.extents.empty() ? std::array<double, 3>{epsilon, epsilon, epsilon} : extents;
-  const auto common = CFP::fairing_objective(
-    options.accurate ? PMP::Constrained_fairing_objective::ACCURATE : PMP::Constrained_fairing_objective::FAIREST,
-    CFP::vertex_tolerance_map(radius, CFP::vertex_deviation_map(
-                                        deviation, CFP::vertex_at_bound_map(at_bound).vertex_is_constrained_map(fixed))));
-
-  const auto start = std::chrono::steady_clock::now();
-  const PMP::Constrained_fairing_result result =
-    options.box || !options.extents.empty() ? PMP::constrained_fairing(mesh, epsilon, CFP::box_half_extents(half_extents, common))
-                                              : PMP::constrained_fairing(mesh, epsilon, common);
-  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-
+  const PMP::Constrained_fairing_result result = PMP::constrained_fairing(mesh, epsilon);
   if(!result)
-    return fail(result.message + "; nothing written");
-  std::cout << "iterations:  " << result.number_of_iterations << " ("
-            << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
-            << ", " << result.number_of_energy_evaluations << " energy evaluations)" << std::endl;
-  std::cout << "energy:      " << result.initial_energy << " -> " << result.final_bending_energy;
-  if(options.accurate)
-    std::cout << " (objective with the fidelity term: " << result.final_energy << ")";
-  std::cout << std::endl;
-  if(result.number_of_degenerate_edges > 0)
-    std::cout << "degenerate:  " << result.number_of_degenerate_edges
-              << " edges with a degenerate triangle, left out of the energy" << std::endl;
-  const bool box = options.box || !options.extents.empty();
-  std::cout << "deviation:   " << result.max_deviation << " at most ("
-            << (box ? "each coordinate within its box's half-extent" : "bound " + std::to_string(epsilon))
-            << (options.accurate ? ", the solver's 0.7 of it" : "") << "); "
-            << result.number_of_vertices_at_bound << " vertices at their bound, " << result.number_of_fixed_vertices
-            << " fixed" << std::endl;
-  std::cout << "time:        " << seconds.count() << " s" << std::endl;
-
-  // Only a PLY output carries the per-vertex results; the helper maps go.
-  mesh.remove_property_map(radius);
-  mesh.remove_property_map(fixed);
-  const bool ply = std::filesystem::path(out).extension() == ".ply";
-  std::vector<std::uint8_t> flags;
-  for(vertex_descriptor v : vertices(mesh))
-    flags.push_back(std::uint8_t(get(at_bound, v)));
-  mesh.remove_property_map(at_bound);
-  if(ply)
   {
-    auto at_bound_flag = mesh.add_property_map<vertex_descriptor, std::uint8_t>("v:at_bound", 0).first;
-    std::size_t k = 0;
-    for(vertex_descriptor v : vertices(mesh))
-      put(at_bound_flag, v, flags[k++]);
+    std::cerr << "error: " << result.message << std::endl;
+    return EXIT_FAILURE;
   }
-  else
-    mesh.remove_property_map(deviation);
-  const std::string write_error = write_mesh(out, mesh);
-  if(!write_error.empty())
-    return fail(write_error + "; nothing written");
-  std::cout << "output:      " << out << (ply ? " (with vertex properties deviation and at_bound)" : "") << std::endl;
-  return EXIT_SUCCESS;
+  std::cout << in << ": " << result.number_of_iterations << " iterations, energy " << result.initial_energy << " -> "
+            << result.final_energy << ", every vertex within " << result.max_deviation << " <= " << epsilon
+            << " of its input position" << std::endl;
+  return CGAL::IO::write_polygon_mesh("faired.off", mesh, CGAL::parameters::stream_precision(17)) ? EXIT_SUCCESS
+                                                                                                   : EXIT_FAILURE;
 }
