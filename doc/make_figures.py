@@ -1,0 +1,205 @@
+#!/usr/bin/python3
+# Makes the user manual's figures from the current code's outputs:
+#
+#   doc/make_figures.py BUILD_DIR
+#
+# BUILD_DIR is a Release build of the project (tools, examples and benchmarks built). The
+# script runs them on the bundled meshes, in a scratch folder, and renders the PNGs of
+# doc/figures with Debian's python3-matplotlib and python3-numpy (orthographic view, flat
+# shading, painter's algorithm; no display needed). It prints what the programs said, which
+# the captions quote.
+
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from matplotlib.collections import PolyCollection
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "doc", "figures")
+
+
+def run(*command, cwd=None):
+    print("$", " ".join(command))
+    text = subprocess.run(command, cwd=cwd, check=True, capture_output=True, text=True).stdout
+    print(text, end="")
+    return text
+
+
+def read_off(path):
+    with open(path) as f:
+        words = f.read().split()
+    assert words[0] == "OFF"
+    nv, nf = int(words[1]), int(words[2])
+    values = np.array(words[4:4 + 3 * nv], dtype=float).reshape(nv, 3)
+    faces, k = [], 4 + 3 * nv
+    for _ in range(nf):
+        n = int(words[k])
+        faces.append([int(w) for w in words[k + 1:k + 1 + n]])
+        k += 1 + n
+    return values, np.array(faces, dtype=int)
+
+
+def read_ply_with_deviation(path):
+    """The tool's binary PLY output: vertices (x, y, z as double, deviation, at_bound), faces."""
+    with open(path, "rb") as f:
+        header = []
+        while True:
+            line = f.readline().decode("ascii").strip()
+            header.append(line)
+            if line == "end_header":
+                break
+        body = f.read()
+    assert any("binary_little_endian" in h for h in header)
+    nv = int(next(h for h in header if h.startswith("element vertex")).split()[2])
+    nf = int(next(h for h in header if h.startswith("element face")).split()[2])
+    props = []
+    in_vertex = False
+    for h in header:
+        if h.startswith("element"):
+            in_vertex = h.startswith("element vertex")
+        elif h.startswith("property") and in_vertex:
+            props.append((h.split()[1], h.split()[2]))
+    formats = {"double": "d", "float": "f", "uchar": "B", "int": "i", "uint": "I"}
+    vertex_format = "<" + "".join(formats[t] for t, _ in props)
+    size = struct.calcsize(vertex_format)
+    names = [n for _, n in props]
+    rows = [struct.unpack_from(vertex_format, body, i * size) for i in range(nv)]
+    data = np.array(rows, dtype=float)
+    points = data[:, [names.index("x"), names.index("y"), names.index("z")]]
+    deviation = data[:, names.index("deviation")]
+    faces, offset = [], nv * size
+    for _ in range(nf):
+        n = body[offset]
+        faces.append(struct.unpack_from("<%di" % n, body, offset + 1))
+        offset += 1 + 4 * n
+    return points, np.array(faces, dtype=int), deviation
+
+
+def mean_curvature(points, faces):
+    """|H| per vertex: half the length of the cotangent Laplacian over the mixed area."""
+    laplacian = np.zeros_like(points)
+    area = np.zeros(len(points))
+    for k in range(3):
+        i, j, l = faces[:, k], faces[:, (k + 1) % 3], faces[:, (k + 2) % 3]
+        u, v = points[j] - points[i], points[l] - points[i]
+        cross = np.linalg.norm(np.cross(u, v), axis=1)
+        cot = np.einsum("ij,ij->i", u, v) / np.maximum(cross, 1e-300)  # at corner i, opposite edge j-l
+        np.add.at(laplacian, j, (cot[:, None] * (points[l] - points[j])))
+        np.add.at(laplacian, l, (cot[:, None] * (points[j] - points[l])))
+        np.add.at(area, i, cross / 6)
+    return 0.5 * np.linalg.norm(laplacian, axis=1) / np.maximum(2 * area, 1e-300)
+
+
+def view(yaw, pitch):
+    """The rotation that turns a model with y up by `yaw` degrees about y, then tilts it by
+    `pitch` degrees towards the viewer, who looks along -z."""
+    a, e = np.radians(yaw), np.radians(pitch)
+    ry = np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
+    rx = np.array([[1, 0, 0], [0, np.cos(e), -np.sin(e)], [0, np.sin(e), np.cos(e)]])
+    return rx @ ry
+
+
+def draw(ax, points, faces, values, cmap, vmin, vmax, rotation, title):
+    """Orthographic view along -z after `rotation`, back faces culled, flat shading
+    by the light from the viewer, each face coloured by the mean of its vertices' values."""
+    p = (points - points.mean(axis=0)) @ rotation.T
+    tri = p[faces]
+    normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    facing = normal[:, 2] > 0
+    order = np.argsort(tri[facing][:, :, 2].mean(axis=1))
+    shade = 0.35 + 0.65 * (normal[facing][:, 2] / np.maximum(length[facing], 1e-300))[order]
+    colour = plt.get_cmap(cmap)(np.clip((values[faces[facing]].mean(axis=1)[order] - vmin) / (vmax - vmin), 0, 1))
+    colour[:, :3] *= shade[:, None]
+    # Edges in the faces' colours, so that no seam shows between neighbours.
+    ax.add_collection(PolyCollection(tri[facing][order][:, :, :2], facecolors=colour, edgecolors=colour,
+                                     linewidths=0.3))
+    ax.set_xlim(p[:, 0].min(), p[:, 0].max())
+    ax.set_ylim(p[:, 1].min(), p[:, 1].max())
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.set_title(title, fontsize=10)
+    return plt.cm.ScalarMappable(norm=matplotlib.colors.Normalize(vmin, vmax), cmap=cmap)
+
+
+def save(fig, name):
+    path = os.path.join(OUT, name)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    print("wrote", path)
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: doc/make_figures.py BUILD_DIR")
+    build = os.path.abspath(sys.argv[1])
+    tool = os.path.join(build, "tools", "constrained_fairing")
+    data = os.path.join(ROOT, "data")
+    os.makedirs(OUT, exist_ok=True)
+    work = tempfile.mkdtemp()
+
+    # The bunny (a real scan, 75 k triangles) with noise of a quarter of its mean edge length,
+    # faired with epsilon the noise radius; the tool's PLY carries the deviation.
+    noisy = os.path.join(work, "bunny_noisy.off")
+    said = run(os.path.join(build, "benchmark", "add_noise"), os.path.join(data, "bunny00.off"), "0.25", noisy, "1")
+    eps = float(said.split("noise radius ")[1])
+    faired = os.path.join(work, "bunny_faired.ply")
+    run(tool, "--eps", repr(eps), noisy, faired)
+    points0, faces = read_off(noisy)
+    points1, faces1, deviation = read_ply_with_deviation(faired)
+    assert (faces1 == faces).all()
+    front = view(0, 0)
+
+    h0, h1 = mean_curvature(points0, faces), mean_curvature(points1, faces)
+    top = np.percentile(h1, 98)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 5))
+    draw(axes[0], points0, faces, h0, "viridis", 0, top, front, "noisy input (noise radius 0.25 h)")
+    mappable = draw(axes[1], points1, faces, h1, "viridis", 0, top, front, "constrained fairing, eps = 0.25 h")
+    fig.colorbar(mappable, ax=axes, shrink=0.6, label="mean curvature |H|")
+    save(fig, "bunny_curvature.png")
+
+    fig, ax = plt.subplots(figsize=(6, 5))
+    mappable = draw(ax, points1, faces, deviation, "magma", 0, eps, front, "distance to the input position")
+    fig.colorbar(mappable, ax=ax, shrink=0.7, label="deviation (the scale ends at eps = %.5f)" % eps)
+    save(fig, "bunny_deviation.png")
+
+    # Constrained fairing against mean curvature flow at equal bending energy, on the bundled
+    # noisy elephant (noise radius 0.25 h, eps the same).
+    elephant = os.path.join(data, "elephant_noisy.off")
+    eps_elephant = 0.25 * 0.0219972  # data/README.md: h of the clean elephant
+    faired_off, flow_off = os.path.join(work, "faired.off"), os.path.join(work, "flow.off")
+    run(os.path.join(build, "benchmark", "flow_comparison"), elephant, repr(eps_elephant), faired_off, flow_off)
+    pe, fe = read_off(elephant)
+    pf, _ = read_off(faired_off)
+    pm, _ = read_off(flow_off)
+    move_f = np.linalg.norm(pf - pe, axis=1)
+    move_m = np.linalg.norm(pm - pe, axis=1)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.5))
+    top = 4 * eps_elephant
+    side = view(-30, 10)
+    draw(axes[0], pf, fe, move_f, "magma", 0, top, side, "constrained fairing")
+    mappable = draw(axes[1], pm, fe, move_m, "magma", 0, top, side, "smooth_shape at its lowest bending energy")
+    fig.colorbar(mappable, ax=axes, shrink=0.6, label="distance to the input (the scale ends at 4 eps)")
+    save(fig, "fairing_vs_flow.png")
+
+    # A terraced isosurface: surface nets of the elephant on slices 3 times thicker than the
+    # pixels, before and after fairing within each vertex's voxel.
+    run(os.path.join(build, "examples", "Constrained_fairing", "voxel_fairing_example"),
+        os.path.join(work, "staircase.off"), os.path.join(work, "voxels_faired.off"))
+    ps, fs = read_off(os.path.join(work, "staircase.off"))
+    pv, _ = read_off(os.path.join(work, "voxels_faired.off"))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.5))
+    draw(axes[0], ps, fs, np.zeros(len(ps)), "Greys", -1, 1, side, "surface nets, 1 x 1 x 3 voxels")
+    draw(axes[1], pv, fs, np.zeros(len(pv)), "Greys", -1, 1, side, "faired within each voxel")
+    save(fig, "voxels.png")
+
+
+if __name__ == "__main__":
+    main()
