@@ -195,6 +195,7 @@ void check_bad_weights()
       m, 0.01, CFP::fidelity_weight(mu, CFP::fairing_objective(PMP::Constrained_fairing_objective::ACCURATE)));
     CHECK(r.status == PMP::Constrained_fairing_status::INVALID_INPUT);
     CHECK(r.message.find("fidelity_weight") != std::string::npos);
+    CHECK(r.defect == PMP::Constrained_fairing_defect::INVALID_FIDELITY_WEIGHT);
     CHECK(test::identical(test::points(m), before));
   }
   // Weight 0: the bending energy alone, the same as the fairest objective.

@@ -39,14 +39,16 @@ bool same_connectivity(const Mesh& a, const Mesh& b)
   return true;
 }
 
-// Fairs a copy of m, expects INVALID_INPUT with `expected` in the message, and the copy
-// unchanged.
-void check_rejected(const Mesh& m, const std::string& expected, double eps = 0.1)
+// Fairs a copy of m, expects INVALID_INPUT of the kind `defect` with `expected` in the message,
+// and the copy unchanged.
+void check_rejected(const Mesh& m, PMP::Constrained_fairing_defect defect, const std::string& expected,
+                    double eps = 0.1)
 {
   Mesh copy = m;
   const auto r = PMP::constrained_fairing(copy, eps);
   std::cout << "  \"" << r.message << "\"" << std::endl;
   CHECK(!r && r.status == Constrained_fairing_status::INVALID_INPUT);
+  CHECK(r.defect == defect);
   CHECK(r.message.find(expected) != std::string::npos);
   CHECK(r.number_of_iterations == 0);
   CHECK(test::identical(test::points(copy), test::points(m)));
@@ -92,16 +94,16 @@ void check_epsilon()
   const Mesh m = patch();
   for(double eps : {0.0, -0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                     -std::numeric_limits<double>::infinity()})
-    check_rejected(m, "epsilon must be a positive finite number", eps);
+    check_rejected(m, PMP::Constrained_fairing_defect::INVALID_EPSILON, "epsilon must be a positive finite number", eps);
 }
 
 void check_empty()
 {
-  check_rejected(Mesh(), "the mesh is empty");
+  check_rejected(Mesh(), PMP::Constrained_fairing_defect::EMPTY_MESH, "the mesh is empty");
   Mesh points_only;
   points_only.add_vertex(Point(0, 0, 0));
   points_only.add_vertex(Point(1, 0, 0));
-  check_rejected(points_only, "the mesh has no faces");
+  check_rejected(points_only, PMP::Constrained_fairing_defect::NO_FACES, "the mesh has no faces");
 }
 
 // Adds these vertices to m, in order.
@@ -122,11 +124,11 @@ void check_non_triangle_face()
       CGAL::Euler::join_face(halfedge(e, m), m);
       break;
     }
-  check_rejected(m, "has 4 vertices: the mesh must be made of triangles");
+  check_rejected(m, PMP::Constrained_fairing_defect::NOT_TRIANGLE, "has 4 vertices: the mesh must be made of triangles");
   Mesh pentagon;
   pentagon.add_face(add_vertices(pentagon, {Point(1, 0, 0), Point(0.3, 0.95, 0), Point(-0.8, 0.6, 0), Point(-0.8, -0.6, 0),
                                             Point(0.3, -0.95, 0)}));
-  check_rejected(pentagon, "face 0 has 5 vertices");
+  check_rejected(pentagon, PMP::Constrained_fairing_defect::NOT_TRIANGLE, "face 0 has 5 vertices");
 }
 
 void check_non_manifold_vertex()
@@ -136,7 +138,7 @@ void check_non_manifold_vertex()
   const auto v = add_vertices(m, {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 0, 0.1), Point(0, -1, 0.1)});
   CHECK(m.add_face(v[0], v[1], v[2]) != Mesh::null_face());
   CHECK(m.add_face(v[0], v[3], v[4]) != Mesh::null_face());
-  check_rejected(m, "vertex 0 is non-manifold");
+  check_rejected(m, PMP::Constrained_fairing_defect::NON_MANIFOLD_VERTEX, "vertex 0 is non-manifold");
 }
 
 void check_non_manifold_edge()
@@ -147,14 +149,14 @@ void check_non_manifold_edge()
   m.add_face(v[0], v[1], v[2]);
   m.add_face(v[1], v[0], v[3]);
   add_detached_triangle(m, {v[0], v[1], v[4]});
-  check_rejected(m, "the edge between vertices 0 and 1 has 3 faces (a non-manifold edge)");
+  check_rejected(m, PMP::Constrained_fairing_defect::NON_MANIFOLD_EDGE, "the edge between vertices 0 and 1 has 3 faces (a non-manifold edge)");
 
   // Two faces through the same two vertices, by two different edges.
   Mesh seam;
   v = add_vertices(seam, {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)});
   seam.add_face(v[0], v[1], v[2]);
   add_detached_triangle(seam, {v[1], v[0], v[3]});
-  check_rejected(seam, "through two different edges (a non-manifold edge)");
+  check_rejected(seam, PMP::Constrained_fairing_defect::NON_MANIFOLD_EDGE, "through two different edges (a non-manifold edge)");
 }
 
 void check_inconsistent_orientation()
@@ -164,7 +166,7 @@ void check_inconsistent_orientation()
   const auto v = add_vertices(m, {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0)});
   m.add_face(v[0], v[1], v[2]);
   add_detached_triangle(m, {v[0], v[1], v[3]});
-  check_rejected(m, "faces 0 and 1 are oriented inconsistently: both run from vertex 0 to vertex 1");
+  check_rejected(m, PMP::Constrained_fairing_defect::INCONSISTENT_ORIENTATION, "faces 0 and 1 are oriented inconsistently: both run from vertex 0 to vertex 1");
 }
 
 void check_broken_structure()
@@ -173,7 +175,7 @@ void check_broken_structure()
   // A halfedge that is its own next: next() no longer matches prev().
   const halfedge_descriptor h = halfedge(*faces(m).begin(), m);
   set_next(h, h, m);
-  check_rejected(m, "the mesh's halfedge structure is broken");
+  check_rejected(m, PMP::Constrained_fairing_defect::BROKEN_STRUCTURE, "the mesh's halfedge structure is broken");
 }
 
 void check_non_finite_coordinates()
@@ -182,7 +184,7 @@ void check_non_finite_coordinates()
   {
     Mesh m = patch();
     m.point(*std::next(vertices(m).begin(), 6)) = Point(0.3, bad, 0);
-    check_rejected(m, "vertex 6 has a NaN or infinite coordinate");
+    check_rejected(m, PMP::Constrained_fairing_defect::NON_FINITE_COORDINATE, "vertex 6 has a NaN or infinite coordinate");
   }
 }
 
@@ -191,7 +193,7 @@ void check_no_area()
   Mesh m = patch();
   for(auto v : vertices(m))
     m.point(v) = Point(m.point(v).x(), 0, 0); // every vertex on the x axis
-  check_rejected(m, "all triangles of the mesh have zero area");
+  check_rejected(m, PMP::Constrained_fairing_defect::NO_AREA, "all triangles of the mesh have zero area");
 }
 
 void check_isolated_vertices()

@@ -149,6 +149,7 @@ void check_boxes()
     const auto refused = PMP::constrained_fairing(bad, 1.0, CFP::vertex_box_center_map(bad_centre, CFP::box_half_extents(cell)));
     CHECK(refused.status == Constrained_fairing_status::INVALID_INPUT);
     CHECK(refused.message == "vertex 5 lies outside its box");
+    CHECK(refused.defect == PMP::Constrained_fairing_defect::OUTSIDE_BOX);
     CHECK(test::identical(test::points(bad), before));
   }
 }
@@ -270,6 +271,7 @@ void check_bad_values()
     const auto result = PMP::constrained_fairing(m, eps, CFP::vertex_tolerance_map(tolerance));
     CHECK(result.status == Constrained_fairing_status::INVALID_INPUT);
     CHECK(result.message.find("vertex 17 has a negative, NaN or infinite tolerance") == 0);
+    CHECK(result.defect == PMP::Constrained_fairing_defect::INVALID_TOLERANCE);
     CHECK(test::identical(test::points(m), before));
 
     auto extents = m.add_property_map<vertex_descriptor, std::array<double, 3> >("v:extents").first;
@@ -279,11 +281,26 @@ void check_bad_values()
     const auto box = PMP::constrained_fairing(m, eps, CFP::vertex_box_half_extents_map(extents));
     CHECK(box.status == Constrained_fairing_status::INVALID_INPUT);
     CHECK(box.message.find("the box half-extents of vertex 3 must be finite and non-negative") == 0);
+    CHECK(box.defect == PMP::Constrained_fairing_defect::INVALID_BOX_EXTENTS);
     CHECK(test::identical(test::points(m), before));
 
     const auto global = PMP::constrained_fairing(m, eps, CFP::box_half_extents(std::array<double, 3>{eps, eps, bad}));
     CHECK(global.status == Constrained_fairing_status::INVALID_INPUT);
+    CHECK(global.defect == PMP::Constrained_fairing_defect::INVALID_BOX_EXTENTS);
     CHECK(test::identical(test::points(m), before));
+
+    if(!std::isfinite(bad))
+    {
+      auto centre = m.add_property_map<vertex_descriptor, Point>("v:centre").first;
+      for(auto v : vertices(m))
+        put(centre, v, m.point(v));
+      put(centre, *std::next(vertices(m).begin(), 4), Point(0, bad, 0));
+      const auto centred = PMP::constrained_fairing(m, eps, CFP::vertex_box_center_map(centre));
+      CHECK(centred.defect == PMP::Constrained_fairing_defect::INVALID_BOX_CENTER);
+      CHECK(centred.message.find("the box centre of vertex 4 has a NaN or infinite coordinate") == 0);
+      CHECK(test::identical(test::points(m), before));
+      m.remove_property_map(centre);
+    }
   }
   Mesh m = noisy_sphere();
   const std::vector<Point> before = test::points(m);
@@ -291,6 +308,7 @@ void check_bad_values()
     m, eps, CFP::deviation_bound(Deviation_bound::BALL, CFP::box_half_extents(std::array<double, 3>{eps, eps, eps})));
   CHECK(mixed.status == Constrained_fairing_status::INVALID_INPUT);
   CHECK(mixed.message == "box half-extents or centres were given with the ball bound");
+  CHECK(mixed.defect == PMP::Constrained_fairing_defect::BOX_WITH_BALL);
   CHECK(test::identical(test::points(m), before));
 }
 

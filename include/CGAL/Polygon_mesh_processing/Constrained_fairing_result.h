@@ -28,6 +28,50 @@ enum class Constrained_fairing_status
 };
 
 /// \ingroup PkgConstrainedFairingRef
+/// The defect of an input that `constrained_fairing()` rejected, one per check of its input
+/// contract, in the order the checks are made; the result's message says the same in words,
+/// naming the first vertex or face concerned.
+enum class Constrained_fairing_defect
+{
+  /// the input was accepted
+  NONE,
+  /// the mesh has no vertex
+  EMPTY_MESH,
+  /// the mesh has no face
+  NO_FACES,
+  /// the `next()`, `prev()`, `opposite()`, `target()` and `face()` links disagree
+  BROKEN_STRUCTURE,
+  /// a face is not a triangle
+  NOT_TRIANGLE,
+  /// an edge with more than two faces, or two faces sharing two vertices through two edges
+  NON_MANIFOLD_EDGE,
+  /// two neighbouring faces run through their shared vertices in the same direction
+  INCONSISTENT_ORIENTATION,
+  /// the faces around a vertex form more than one fan
+  NON_MANIFOLD_VERTEX,
+  /// more vertices or faces than the solver's 32-bit indices hold
+  MESH_TOO_LARGE,
+  /// a vertex has a NaN or infinite coordinate
+  NON_FINITE_COORDINATE,
+  /// `epsilon` is not a positive finite number
+  INVALID_EPSILON,
+  /// `fidelity_weight` is negative, NaN or infinite
+  INVALID_FIDELITY_WEIGHT,
+  /// box parameters were given with `deviation_bound(Deviation_bound::BALL)`
+  BOX_WITH_BALL,
+  /// a box half-extent (`box_half_extents`, `vertex_box_half_extents_map`) is negative, NaN or infinite
+  INVALID_BOX_EXTENTS,
+  /// a per-vertex tolerance is negative, NaN or infinite
+  INVALID_TOLERANCE,
+  /// a box centre has a NaN or infinite coordinate
+  INVALID_BOX_CENTER,
+  /// an input position lies outside its box
+  OUTSIDE_BOX,
+  /// every triangle has zero area
+  NO_AREA
+};
+
+/// \ingroup PkgConstrainedFairingRef
 /// What `constrained_fairing()` did. Converts to `true` when the mesh holds a faired result:
 /// every vertex within the bound and the energy not higher than at the start.
 struct Constrained_fairing_result
@@ -36,6 +80,8 @@ struct Constrained_fairing_result
   Constrained_fairing_status status = Constrained_fairing_status::INVALID_INPUT;
   /// a human readable reason when `status` is a failure, empty otherwise
   std::string message;
+  /// what is wrong with the input when `status` is `INVALID_INPUT`, `NONE` otherwise
+  Constrained_fairing_defect defect = Constrained_fairing_defect::NONE;
   /// iterations done: accepted steps of the quasi-Newton method (the default); a Cauchy step
   /// followed by a Newton step for `ACTIVE_SET_NEWTON`; a Cauchy step for `PROJECTED_GRADIENT`
   std::size_t number_of_iterations = 0;

@@ -222,21 +222,19 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
   CGAL_precondition(options.threshold >= 0);
 
   Constrained_fairing_result result;
-  if(num_vertices(tmesh) == 0)
-  {
-    result.message = "the mesh is empty";
-    return result;
-  }
+  // The checks of Input_check.h, in order; the first defect found ends the call.
+  const auto rejected = [&result](Input_error error) {
+    result.defect = error.defect;
+    result.message = std::move(error.message);
+    return bool(result.defect != Constrained_fairing_defect::NONE);
+  };
 
   // Messages number the vertices in the order `vertices(tmesh)` lists them.
   auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh);
   std::size_t count = 0;
   for(auto v : vertices(tmesh))
     put(vertex_index, v, count++);
-  result.message = connectivity_error(tmesh, vertex_index);
-  if(result.message.empty())
-    result.message = size_error(tmesh);
-  if(!result.message.empty())
+  if(rejected(mesh_error(tmesh, vertex_index)))
     return result;
 
   const Fairing_part<TriangleMesh> part =
@@ -254,16 +252,10 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     const Point_3& p = get(vpm, v);
     point(X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   });
-  result.message = coordinates_error(X0, number);
-  if(result.message.empty())
-    result.message = epsilon_error(epsilon);
   const double mu = choose_parameter(get_parameter(np, fidelity_weight), default_fidelity_weight);
-  if(result.message.empty() && !(mu >= 0 && std::isfinite(mu)))
-    result.message = "fidelity_weight must be finite and non-negative (" + std::to_string(mu) + ")";
   Vertex_bounds bounds;
-  if(result.message.empty())
-    result.message = bounds.read(part, epsilon, np);
-  if(!result.message.empty())
+  if(rejected(coordinates_error(X0, number)) || rejected(epsilon_error(epsilon)) ||
+     rejected(fidelity_weight_error(mu)) || rejected(bounds.read(part, epsilon, np)))
     return result;
 
   // From here on, the vertices are stored in the Hilbert order of their input positions, and
@@ -288,30 +280,26 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
                         })
            : Hinge_mesh(tmesh, vertex_index);
   Fairing_objective energy(mesh, X0);
-  if(!energy.is_defined())
-  {
-    result.message = "all triangles of the mesh have zero area";
-    return result;
-  }
 
   Points X = X0;
   Points anchor;
   const auto run = [&](const auto& bound) {
+    // Vertex i in the Hilbert order, named as in messages.
+    const auto sorted_number = [&](std::size_t i) {
+      std::size_t name = 0;
+      part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
+        if(get(vertex_index, v) == i)
+          name = part.number(k);
+      });
+      return name;
+    };
+    if(rejected(outside_box_error(bound.first_outside(X0), n, sorted_number)) || rejected(area_error(energy.is_defined())))
+      return;
     if(accurate)
     {
       anchor = X0;
       smooth_start(mesh, bound, accurate_anchor_steps, anchor);
       energy.add_fidelity(mu, [&bounds](std::size_t i) { return bounds.largest_size(i); }, anchor);
-    }
-    const std::size_t outside = bound.first_outside(X0);
-    if(outside < n)
-    {
-      result.status = Constrained_fairing_status::INVALID_INPUT;
-      part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
-        if(get(vertex_index, v) == outside)
-          result.message = "vertex " + std::to_string(part.number(k)) + " lies outside its box";
-      });
-      return;
     }
     result.initial_energy = result.final_energy = result.final_bending_energy = energy.value(X0);
     result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
@@ -473,10 +461,11 @@ The loops over vertices, triangles and hinges run in parallel when %CGAL is link
 (`CGAL_LINKED_WITH_TBB`); the result is bit-identical for any number of threads.
 
 <b>Input.</b> The mesh is checked before anything else; a mesh that breaks this contract gives
-`Constrained_fairing_status::INVALID_INPUT`, a message naming the defect and the first
+`Constrained_fairing_status::INVALID_INPUT`, the defect's kind (a
+`Constrained_fairing_defect`, in the result's `defect`), a message naming it and the first
 vertex or face concerned (numbered from 0 in the order `vertices(tmesh)` and `faces(tmesh)`
 list them, which for a mesh read from a file is the file's order), and `tmesh` untouched.
-The checks, in the order they are made:
+The checks, in the order they are made (the order of `Constrained_fairing_defect`):
 - no vertex, or no face;
 - broken halfedge links (`next()`, `prev()`, `opposite()`, `target()` and `face()` disagree);
 - a face that is not a triangle;
@@ -489,9 +478,10 @@ The checks, in the order they are made:
 - a NaN or infinite coordinate;
 - `epsilon` negative, zero, NaN or infinite;
 - `fidelity_weight` negative, NaN or infinite;
-- a per-vertex tolerance or box half-extent negative, NaN or infinite, or a box centre with a
-  NaN or infinite coordinate (for the vertices that may move);
 - box parameters with `deviation_bound(Deviation_bound::BALL)`;
+- `box_half_extents` negative, NaN or infinite;
+- for each vertex that may move, in order: its tolerance, its box half-extents negative, NaN or
+  infinite, or its box centre with a NaN or infinite coordinate;
 - an input position outside its box;
 - all triangles of zero area.
 

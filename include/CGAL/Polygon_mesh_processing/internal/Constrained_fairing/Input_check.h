@@ -1,14 +1,18 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The input contract of constrained_fairing(), checked before anything is computed. Meshes
-// come from files, so every defect a file can hold is a recoverable error with a message that
-// names it, in release builds too. Vertices and faces are named by their position, from 0, in
-// vertices(tmesh) and faces(tmesh): for a mesh read from a file, their order in the file.
+// The input contract of constrained_fairing(), checked before anything is computed, in the
+// order of Constrained_fairing_defect: the mesh (mesh_error), its coordinates, epsilon, the
+// fidelity weight, the per-vertex bounds (Vertex_bounds::read, with the values it reads), the
+// input positions in their boxes, and the area. Meshes come from files, so every defect a file
+// can hold is a recoverable error, in release builds too, with its kind and a message that
+// names it. Vertices and faces are named by their position, from 0, in vertices(tmesh) and
+// faces(tmesh): for a mesh read from a file, their order in the file.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_CHECK_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_CHECK_H
 
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
@@ -28,11 +32,29 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-inline std::string epsilon_error(double epsilon)
+// A defect and its message; converts to true when there is one.
+struct Input_error
+{
+  Constrained_fairing_defect defect = Constrained_fairing_defect::NONE;
+  std::string message;
+
+  explicit operator bool() const { return defect != Constrained_fairing_defect::NONE; }
+};
+
+inline Input_error epsilon_error(double epsilon)
 {
   if(std::isfinite(epsilon) && epsilon > 0)
-    return std::string();
-  return "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")";
+    return {};
+  return {Constrained_fairing_defect::INVALID_EPSILON,
+          "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")"};
+}
+
+inline Input_error fidelity_weight_error(double mu)
+{
+  if(std::isfinite(mu) && mu >= 0)
+    return {};
+  return {Constrained_fairing_defect::INVALID_FIDELITY_WEIGHT,
+          "fidelity_weight must be finite and non-negative (" + std::to_string(mu) + ")"};
 }
 
 // The links that the walks below rely on: next() is a permutation whose cycles are the faces
@@ -57,20 +79,24 @@ bool is_valid_structure(const TriangleMesh& tmesh)
   return true;
 }
 
-// Empty, broken, non-triangle, non-manifold or inconsistently oriented meshes. The energy's
-// dihedral angles need each interior edge to join exactly two triangles that run through it in
-// opposite directions; a halfedge structure ensures this for the faces it links across an edge,
-// but two of its faces may still share two vertices through separate edges.
+// Empty, broken, non-triangle, non-manifold, inconsistently oriented or too large meshes. The
+// energy's dihedral angles need each interior edge to join exactly two triangles that run
+// through it in opposite directions; a halfedge structure ensures this for the faces it links
+// across an edge, but two of its faces may still share two vertices through separate edges.
 template <typename TriangleMesh, typename VertexIndexMap>
-std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& vertex_index)
+Input_error mesh_error(const TriangleMesh& tmesh, const VertexIndexMap& vertex_index)
 {
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using D = Constrained_fairing_defect;
   auto id = [&](auto v) { return std::to_string(get(vertex_index, v)); };
 
+  if(num_vertices(tmesh) == 0)
+    return {D::EMPTY_MESH, "the mesh is empty"};
   if(num_faces(tmesh) == 0)
-    return "the mesh has no faces";
+    return {D::NO_FACES, "the mesh has no faces"};
   if(!is_valid_structure(tmesh))
-    return "the mesh's halfedge structure is broken (its next, prev, opposite, target and face links disagree)";
+    return {D::BROKEN_STRUCTURE,
+            "the mesh's halfedge structure is broken (its next, prev, opposite, target and face links disagree)"};
 
   // Each face's three directed edges, as (smaller vertex, larger vertex, face, halfedge).
   struct Face_edge
@@ -86,7 +112,8 @@ std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& 
     const auto around = halfedges_around_face(halfedge(f, tmesh), tmesh);
     const auto degree = std::distance(around.begin(), around.end());
     if(degree != 3)
-      return "face " + std::to_string(face_number) + " has " + std::to_string(degree) + " vertices: the mesh must be made of triangles";
+      return {D::NOT_TRIANGLE, "face " + std::to_string(face_number) + " has " + std::to_string(degree) +
+                                  " vertices: the mesh must be made of triangles"};
     for(halfedge_descriptor h : around)
     {
       const std::size_t s = get(vertex_index, source(h, tmesh)), t = get(vertex_index, target(h, tmesh));
@@ -104,14 +131,16 @@ std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& 
     const Face_edge &x = face_edges[i], &y = face_edges[i + 1];
     const std::string edge = "vertices " + std::to_string(x.a) + " and " + std::to_string(x.b);
     if(j - i > 2)
-      return "the edge between " + edge + " has " + std::to_string(j - i) + " faces (a non-manifold edge)";
+      return {D::NON_MANIFOLD_EDGE,
+              "the edge between " + edge + " has " + std::to_string(j - i) + " faces (a non-manifold edge)"};
     if(j - i < 2 || opposite(x.h, tmesh) == y.h)
       continue;
     if(target(x.h, tmesh) == target(y.h, tmesh))
-      return "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) + " are oriented inconsistently: both run from vertex " +
-             id(source(x.h, tmesh)) + " to vertex " + id(target(x.h, tmesh));
-    return "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) + " share " + edge +
-           " through two different edges (a non-manifold edge)";
+      return {D::INCONSISTENT_ORIENTATION, "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) +
+                                              " are oriented inconsistently: both run from vertex " +
+                                              id(source(x.h, tmesh)) + " to vertex " + id(target(x.h, tmesh))};
+    return {D::NON_MANIFOLD_EDGE, "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) + " share " +
+                                    edge + " through two different edges (a non-manifold edge)"};
   }
 
   std::vector<halfedge_descriptor> pinched;
@@ -121,31 +150,45 @@ std::string connectivity_error(const TriangleMesh& tmesh, const VertexIndexMap& 
     std::size_t first = (std::numeric_limits<std::size_t>::max)();
     for(halfedge_descriptor h : pinched)
       first = (std::min)(first, static_cast<std::size_t>(get(vertex_index, target(h, tmesh))));
-    return "vertex " + std::to_string(first) + " is non-manifold: its faces form more than one fan";
+    return {D::NON_MANIFOLD_VERTEX, "vertex " + std::to_string(first) + " is non-manifold: its faces form more than one fan"};
   }
-  return std::string();
+
+  // The solver numbers vertices and face corners with 32 bits.
+  if(static_cast<std::size_t>(num_vertices(tmesh)) > (std::numeric_limits<Index>::max)() ||
+     static_cast<std::size_t>(num_faces(tmesh)) > Hinge_mesh::max_faces)
+    return {D::MESH_TOO_LARGE, "the mesh is too large: at most " + std::to_string((std::numeric_limits<Index>::max)()) +
+                                 " vertices and " + std::to_string(Hinge_mesh::max_faces) + " faces"};
+  return {};
 }
 
-// X0 holds the points of the vertices, numbered as in vertex_index.
-// The solver numbers vertices and face corners with 32 bits.
-template <typename TriangleMesh>
-std::string size_error(const TriangleMesh& tmesh)
-{
-  if(static_cast<std::size_t>(num_vertices(tmesh)) <= (std::numeric_limits<Index>::max)() &&
-     static_cast<std::size_t>(num_faces(tmesh)) <= Hinge_mesh::max_faces)
-    return std::string();
-  return "the mesh is too large: at most " + std::to_string((std::numeric_limits<Index>::max)()) + " vertices and " +
-         std::to_string(Hinge_mesh::max_faces) + " faces";
-}
-
-// `number(i)` names vertex i in the message.
+// X0 holds the points of the vertices; `number(i)` names vertex i in the message.
 template <typename Number>
-std::string coordinates_error(const Points& X0, const Number& number)
+Input_error coordinates_error(const Points& X0, const Number& number)
 {
   for(Eigen::Index i = 0; i < X0.rows(); ++i)
     if(!X0.row(i).allFinite())
-      return "vertex " + std::to_string(number(static_cast<std::size_t>(i))) + " has a NaN or infinite coordinate";
-  return std::string();
+      return {Constrained_fairing_defect::NON_FINITE_COORDINATE,
+              "vertex " + std::to_string(number(static_cast<std::size_t>(i))) + " has a NaN or infinite coordinate"};
+  return {};
+}
+
+// `outside` is the first vertex outside its box (Deviation_bounds.h's first_outside()), or the
+// number of vertices if there is none; `number(i)` names vertex i in the message.
+template <typename Number>
+Input_error outside_box_error(std::size_t outside, std::size_t n, const Number& number)
+{
+  if(outside >= n)
+    return {};
+  return {Constrained_fairing_defect::OUTSIDE_BOX, "vertex " + std::to_string(number(outside)) + " lies outside its box"};
+}
+
+// `defined`: whether the energy has a scale (Bending_energy::is_defined()), which it lacks
+// only if every triangle has zero area in double.
+inline Input_error area_error(bool defined)
+{
+  if(defined)
+    return {};
+  return {Constrained_fairing_defect::NO_AREA, "all triangles of the mesh have zero area"};
 }
 
 } // namespace Constrained_fairing

@@ -15,6 +15,7 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -37,9 +38,9 @@ class Vertex_bounds
 public:
   // Reads the named parameters for the vertices of `part` (a Fairing_part: size(),
   // is_fixed(k), number(k) that names vertex k in messages, for_each_vertex(f(k, v))). Returns
-  // an error message, or an empty string if every value is usable.
+  // the first defect (Input_check.h), none if every value is usable.
   template <typename Part, typename NamedParameters>
-  std::string read(const Part& part, double epsilon, const NamedParameters& np)
+  Input_error read(const Part& part, double epsilon, const NamedParameters& np)
   {
     using parameters::get_parameter;
     using parameters::is_default_parameter;
@@ -52,7 +53,7 @@ public:
     const bool box_asked =
       parameters::choose_parameter(get_parameter(np, deviation_bound), Deviation_bound::BALL) == Deviation_bound::BOX;
     if(box_parameters && !box_asked && !is_default_parameter<NamedParameters, deviation_bound_t>::value)
-      return "box half-extents or centres were given with the ball bound";
+      return {Constrained_fairing_defect::BOX_WITH_BALL, "box half-extents or centres were given with the ball bound"};
     m_box = box_asked || box_parameters;
     m_epsilon = epsilon;
 
@@ -69,7 +70,7 @@ public:
       for(int c = 0; c < 3; ++c)
         m_uniform_extents[c] = h[std::size_t(c)];
       if(!extents_error(m_uniform_extents).empty())
-        return "box_half_extents " + extents_error(m_uniform_extents);
+        return {Constrained_fairing_defect::INVALID_BOX_EXTENTS, "box_half_extents " + extents_error(m_uniform_extents)};
     }
     // Zero for the fixed vertices, whose values are not read.
     if constexpr(has_extents_map)
@@ -78,9 +79,9 @@ public:
       m_centre.setZero(Eigen::Index(n), 3);
 
     // The first bad value of a vertex that may move.
-    std::string error;
+    Input_error error;
     part.for_each_vertex([&](std::size_t k, auto v) {
-      if(!error.empty())
+      if(error)
         return;
       if(part.is_fixed(k))
       {
@@ -92,7 +93,8 @@ public:
       {
         const double t = CGAL::to_double(get(get_parameter(np, vertex_tolerance_map), v));
         if(!(t >= 0) || !std::isfinite(t))
-          error = vertex + " has a negative, NaN or infinite tolerance (" + std::to_string(t) + ")";
+          error = {Constrained_fairing_defect::INVALID_TOLERANCE,
+                   vertex + " has a negative, NaN or infinite tolerance (" + std::to_string(t) + ")"};
         m_tolerance[k] = (std::min)(t, epsilon);
       }
       if constexpr(has_extents_map)
@@ -100,15 +102,17 @@ public:
         const auto& h = get(get_parameter(np, vertex_box_half_extents_map), v);
         for(int c = 0; c < 3; ++c)
           m_extents(Eigen::Index(k), c) = CGAL::to_double(h[c]);
-        if(error.empty() && !extents_error(point(m_extents, k)).empty())
-          error = "the box half-extents of " + vertex + " " + extents_error(point(m_extents, k));
+        if(!error && !extents_error(point(m_extents, k)).empty())
+          error = {Constrained_fairing_defect::INVALID_BOX_EXTENTS,
+                   "the box half-extents of " + vertex + " " + extents_error(point(m_extents, k))};
       }
       if constexpr(has_centre_map)
       {
         const auto& c = get(get_parameter(np, vertex_box_center_map), v);
         point(m_centre, k) = Eigen::Vector3d(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
-        if(error.empty() && !point(m_centre, k).allFinite())
-          error = "the box centre of " + vertex + " has a NaN or infinite coordinate";
+        if(!error && !point(m_centre, k).allFinite())
+          error = {Constrained_fairing_defect::INVALID_BOX_CENTER,
+                   "the box centre of " + vertex + " has a NaN or infinite coordinate"};
       }
     });
     return error;
