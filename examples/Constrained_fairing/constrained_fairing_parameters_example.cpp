@@ -43,11 +43,13 @@ int main(int argc, char* argv[])
     return true; // false would stop here and keep this iterate
   };
   Polyhedron box_mesh = mesh;
+  /// [chaining]
   const auto box = PMP::constrained_fairing(
     box_mesh, epsilon,
     CFP::iteration_callback(report, CFP::deviation_bound(PMP::Deviation_bound::BOX)
                                       .number_of_iterations(30)
                                       .vertex_point_map(get(CGAL::vertex_point, box_mesh))));
+  /// [chaining]
   std::cout << "box of side 2 eps: energy " << box.initial_energy << " -> " << box.final_energy << ", max |p - p0| "
             << box.max_deviation << std::endl;
 
