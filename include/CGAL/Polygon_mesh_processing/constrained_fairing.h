@@ -310,7 +310,10 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
       // has a higher energy than the input.
       if(options.smoothing_steps > 0)
       {
-        smooth_start(mesh, bound, options.smoothing_steps, X);
+        if(accurate && options.smoothing_steps == accurate_anchor_steps)
+          X = anchor; // the same steps from the same input
+        else
+          smooth_start(mesh, bound, options.smoothing_steps, X);
         if(!(energy.value(X) < result.initial_energy))
           X = X0;
       }
@@ -326,8 +329,8 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
 
       // Fold repair (Fold_repair.h), on the triangles with a vertex that moves. Each round
       // re-seeds the folds and descends again, within the iterations left; it is kept if its
-      // objective is not higher and it leaves fewer folds (or was cancelled). The callback hears only the iterates of a
-      // round that are below the objective reached before it.
+      // objective is not higher and it leaves fewer folds (or was cancelled). The callback
+      // hears only the iterates of a round that are below the objective reached before it.
       const auto folds = [&](const Points& Y) {
         std::vector<Index> folded = folded_triangles(mesh, Y);
         folded.erase(std::remove_if(folded.begin(), folded.end(),
