@@ -26,10 +26,13 @@
 // The energy and its gradient are then finite on every configuration of the points.
 //
 // Evaluation. The energy and its gradient are the solver's main cost, so they are computed
-// in three passes that each write every output once, in parallel (Parallel_for.h) and with no
-// allocation once the buffers have their sizes: the triangles' normals and areas; per
-// triangle, the terms of its (at most three) hinges, each hinge's energy counted half by each
-// of its triangles; per vertex, the gradient gathered from its corners and edges.
+// in passes that run in parallel (Parallel_for.h) with no allocation once the buffers have
+// their sizes: the triangles' normals and areas; the hinges, each computed once, adding its
+// terms to its two triangles; per vertex, the gradient gathered from its corners and edges.
+// The hinges are coloured so that no two of a colour share a triangle (at most five colours,
+// a triangle having at most three hinges), and the colours are passed one after the other:
+// within one, every triangle is written by one hinge only, and each triangle sums its
+// hinges' terms in the same order whatever the number of threads.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
@@ -43,6 +46,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -105,7 +109,7 @@ public:
   double value(const Points& X)
   {
     compute_triangles(X);
-    return triangle_pass<false>();
+    return hinge_pass<false>();
   }
 
   // Returns the energy and writes its gradient to G (resized to X's shape). With
@@ -128,7 +132,7 @@ public:
   double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales = nullptr)
   {
     compute_triangles(X);
-    const double energy = triangle_pass<true>();
+    const double energy = hinge_pass<true>();
     G.resize(X.rows(), 3);
     if(scales)
     {
@@ -175,7 +179,8 @@ public:
   }
 
 private:
-  static constexpr Index no_hinge = ~Index(0);
+  // Of the hinges, so that no two of a colour share a triangle.
+  static constexpr std::size_t max_colours = 5;
 
   // A triangle's regularized doubled area l and unit normal n.
   struct Frame
@@ -184,17 +189,21 @@ private:
     double l;
   };
 
-  // The hinges of each triangle (2 h + side, side 0 if the triangle is the hinge's first), and
-  // for each vertex its corners (3 f + k) and the hinges it ends (2 h + end), both in CSR form.
+  // The counted hinges in colour order, and for each vertex its corners (3 f + k) and the
+  // hinges it ends (2 h + end), both in CSR form.
   void build_adjacency(const std::vector<bool>& degenerate)
   {
     const std::size_t n = m_mesh.number_of_vertices;
-    m_triangle_hinges.assign(m_mesh.triangles.size(), {no_hinge, no_hinge, no_hinge});
     m_corner_begin.assign(n + 1, 0);
     m_endpoint_begin.assign(n + 1, 0);
     for(const auto& t : m_mesh.triangles)
       for(Index v : t)
         ++m_corner_begin[v + 1];
+    // Greedy colouring: a hinge takes the smallest colour that no other hinge of its two
+    // triangles has yet; the hinges are then listed colour by colour, in index order.
+    std::vector<std::uint8_t> colour(m_mesh.hinges.size(), 0);
+    std::vector<std::uint8_t> used(m_mesh.triangles.size(), 0); // colours taken, as bits
+    std::array<std::size_t, max_colours + 1> count{};
     m_number_of_hinges = 0;
     for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
     {
@@ -202,12 +211,27 @@ private:
       if(degenerate[hinge.f[0]] || degenerate[hinge.f[1]])
         continue;
       ++m_number_of_hinges;
+      const unsigned taken = used[hinge.f[0]] | used[hinge.f[1]];
+      std::uint8_t c = 0;
+      while(taken & (1u << c))
+        ++c;
+      colour[h] = c;
+      ++count[c + 1];
       for(Index side = 0; side < 2; ++side)
       {
-        auto& slots = m_triangle_hinges[hinge.f[side]];
-        *std::find(slots.begin(), slots.end(), no_hinge) = static_cast<Index>(2 * h + side);
+        used[hinge.f[side]] = static_cast<std::uint8_t>(used[hinge.f[side]] | (1u << c));
         ++m_endpoint_begin[hinge.v[side] + 1];
       }
+    }
+    for(std::size_t c = 0; c < max_colours; ++c)
+      count[c + 1] += count[c];
+    m_colour_begin.assign(count.begin(), count.end());
+    m_hinge_order.resize(m_number_of_hinges);
+    for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
+    {
+      const Hinge& hinge = m_mesh.hinges[h];
+      if(!degenerate[hinge.f[0]] && !degenerate[hinge.f[1]])
+        m_hinge_order[count[colour[h]]++] = static_cast<Index>(h);
     }
     for(std::size_t i = 0; i < n; ++i)
     {
@@ -259,55 +283,57 @@ private:
     });
   }
 
-  // The energy, each hinge counted half by each of its triangles; with `gradient`, also each
-  // triangle's coefficient a and sum of w_h^2, and each hinge's edge factor 2 dE/dL.
+  // The energy, colour by colour (so that value() and value_and_gradient() add the same
+  // terms in the same order); with `gradient`, also each triangle's coefficient a and sum of
+  // w_h^2, and each hinge's edge factor 2 dE/dL.
   template <bool gradient>
-  double triangle_pass()
+  double hinge_pass()
   {
-    return parallel_sum(m_mesh.triangles.size(), m_partial, [&](std::size_t begin, std::size_t end) {
-      double energy = 0;
-      for(std::size_t f = begin; f < end; ++f)
-      {
-        Eigen::Vector3d a = Eigen::Vector3d::Zero();
-        double weight = 0;
-        for(Index slot : m_triangle_hinges[f])
+    if(gradient)
+      parallel_for_blocks(m_mesh.triangles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+        for(std::size_t f = begin; f < end; ++f)
         {
-          if(slot == no_hinge)
-            continue;
-          const Index h = slot / 2, side = slot % 2;
+          m_coefficient[f].setZero();
+          m_hinge_weight[f] = 0;
+        }
+      });
+    double energy = 0;
+    for(std::size_t c = 0; c < max_colours; ++c)
+    {
+      const std::size_t first = m_colour_begin[c];
+      energy += parallel_sum(m_colour_begin[c + 1] - first, m_partial, [&](std::size_t begin, std::size_t end) {
+        double sum = 0;
+        for(std::size_t k = first + begin; k < first + end; ++k)
+        {
+          const Index h = m_hinge_order[k];
           const Hinge& hinge = m_mesh.hinges[h];
           const Frame& F1 = m_frame[hinge.f[0]];
           const Frame& F2 = m_frame[hinge.f[1]];
           const Eigen::Vector3d e = point(*m_points, hinge.v[1]) - point(*m_points, hinge.v[0]);
           const Eigen::Vector3d d = F1.n - F2.n;
           const double L = e.squaredNorm(), S = F1.l + F2.l, C = 0.5 * d.squaredNorm();
-          energy += 0.5 * (1.5 * L * C / S);
+          const double kC = 1.5 * L / S; // dE/dC
+          sum += kC * C;
           if(!gradient)
             continue;
-          const double kS = -1.5 * L * C / (S * S), kC = 1.5 * L / S;
-          weight += 0.75 * L / S;
-          if(side == 0)
-          {
-            a += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
-            m_edge_factor[h] = 3 * C / S;
-          }
-          else
-            a -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+          const double kS = -kC * C / S; // dE/dS
+          m_coefficient[hinge.f[0]] += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
+          m_coefficient[hinge.f[1]] -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+          m_hinge_weight[hinge.f[0]] += 0.5 * kC;
+          m_hinge_weight[hinge.f[1]] += 0.5 * kC;
+          m_edge_factor[h] = 3 * C / S;
         }
-        if(gradient)
-        {
-          m_coefficient[f] = a;
-          m_hinge_weight[f] = weight;
-        }
-      }
-      return energy;
-    });
+        return sum;
+      });
+    }
+    return energy;
   }
 
   const Hinge_mesh& m_mesh;
   std::size_t m_number_of_hinges = 0; // those without a degenerate triangle
   double m_scale, m_delta = 0;
-  std::vector<std::array<Index, 3> > m_triangle_hinges;
+  std::vector<Index> m_hinge_order;         // the counted hinges, colour by colour
+  std::vector<std::size_t> m_colour_begin; // where each colour starts in m_hinge_order
   std::vector<Index> m_corner_begin, m_corners, m_endpoint_begin, m_endpoints;
   // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and per
   // triangle and hinge
