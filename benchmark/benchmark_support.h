@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <iostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -126,6 +127,16 @@ struct Arguments
     return fallback;
   }
 };
+
+// The base mesh of a speed benchmark: the command line's first positional argument, else the
+// bundled bunny. Says on stderr which file could not be read.
+inline bool read_base_mesh(const Arguments& arguments, Mesh& base, std::string& name)
+{
+  if(read_base_mesh(arguments.positional.empty() ? "" : arguments.positional[0], base, name))
+    return true;
+  std::cerr << "error: cannot read " << name << std::endl;
+  return false;
+}
 
 // Peak resident memory of the process in bytes, and its reset (Linux: /proc/self).
 inline double peak_memory_bytes()

@@ -35,11 +35,8 @@ int main(int argc, char* argv[])
   const benchmark::Arguments arguments(argc, argv);
   Mesh base, noisy;
   std::string name;
-  if(!benchmark::read_base_mesh(arguments.positional.empty() ? "" : arguments.positional[0], base, name))
-  {
-    std::cerr << "error: cannot read " << name << std::endl;
+  if(!benchmark::read_base_mesh(arguments, base, name))
     return EXIT_FAILURE;
-  }
   const unsigned int level = unsigned(std::stoi(arguments.option("level", "1")));
   const unsigned int iterations = unsigned(std::stoi(arguments.option("iterations", "200")));
   const double eps = 0.25 * benchmark::make_noisy_case(base, level, noisy);

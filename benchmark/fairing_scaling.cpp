@@ -46,11 +46,8 @@ int main(int argc, char* argv[])
   const int runs = arguments.runs;
   Mesh base;
   std::string name;
-  if(!benchmark::read_base_mesh(arguments.positional.empty() ? "" : arguments.positional[0], base, name))
-  {
-    std::cerr << "error: cannot read " << name << std::endl;
+  if(!benchmark::read_base_mesh(arguments, base, name))
     return EXIT_FAILURE;
-  }
   const auto level = static_cast<unsigned int>(std::stoul(arguments.option("level", "1")));
   Mesh noisy;
   double h = 0;

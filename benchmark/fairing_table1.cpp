@@ -101,11 +101,8 @@ int main(int argc, char* argv[])
   const benchmark::Arguments arguments(argc, argv);
   Mesh base;
   std::string name;
-  if(!benchmark::read_base_mesh(arguments.positional.empty() ? "" : arguments.positional[0], base, name))
-  {
-    std::cerr << "error: cannot read " << name << std::endl;
+  if(!benchmark::read_base_mesh(arguments, base, name))
     return EXIT_FAILURE;
-  }
   const std::vector<double> levels = parse_list(arguments.option("levels", "0,1,2"));
   const std::vector<double> factors = parse_list(arguments.option("eps", "0.25,1"));
   const auto iterations = static_cast<std::size_t>(std::stoul(arguments.option("iterations", "500")));

@@ -36,11 +36,8 @@ int main(int argc, char* argv[])
   const benchmark::Arguments arguments(argc, argv);
   Mesh base;
   std::string name;
-  if(!benchmark::read_base_mesh(arguments.positional.empty() ? "" : arguments.positional[0], base, name))
-  {
-    std::cerr << "error: cannot read " << name << std::endl;
+  if(!benchmark::read_base_mesh(arguments, base, name))
     return EXIT_FAILURE;
-  }
   const auto level = static_cast<unsigned int>(std::stoul(arguments.option("level", "1")));
   const auto from = static_cast<unsigned int>(std::stoul(arguments.option("from", "50")));
   const auto to = static_cast<unsigned int>(std::stoul(arguments.option("to", "300")));
