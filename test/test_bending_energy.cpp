@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The bending energy of eq. (1): hand-computed values, zero on planes, invariance under rigid
-// motions and uniform scaling, and the analytic gradient against central finite differences.
+// motions and uniform scaling, the analytic gradient against central finite differences, and
+// the evaluation by tiles against a plain sum over the hinges.
 
 #include "test_support.h"
 
@@ -149,6 +150,55 @@ void check_gradients()
   }
 }
 
+// The energy summed hinge by hinge from its formula, with no regularization.
+double plain_energy(const Mesh& m)
+{
+  double sum = 0;
+  for(auto e : edges(m))
+  {
+    if(is_border(e, m))
+      continue;
+    const auto h = halfedge(e, m), o = opposite(h, m);
+    const Point &a = m.point(source(h, m)), &b = m.point(target(h, m));
+    const test::Vector N1 = CGAL::cross_product(b - a, m.point(target(next(h, m), m)) - a);
+    const test::Vector N2 = CGAL::cross_product(a - b, m.point(target(next(o, m), m)) - b);
+    const double l1 = std::sqrt(N1.squared_length()), l2 = std::sqrt(N2.squared_length());
+    const test::Vector d = N1 / l1 - N2 / l2;
+    sum += 1.5 * CGAL::squared_distance(a, b) / (l1 + l2) * 0.5 * d.squared_length();
+  }
+  return sum;
+}
+
+// A mesh of many tiles (Bending_energy::tile_size vertices each), numbered as in its file,
+// so that tiles are scattered over the surface and many triangles and hinges are shared by
+// two tiles: the energy is the plain sum of the hinge terms, whatever the numbering, and the
+// gradient matches finite differences.
+void check_tiled_evaluation()
+{
+  Mesh bunny;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/bunny00.off", bunny));
+  CHECK(num_vertices(bunny) > 8 * CF::Bending_energy::tile_size);
+  test::add_noise(bunny, 0.25 * test::mean_edge_length(bunny), 12);
+  const Indexed x(bunny);
+  const double E = CF::Bending_energy(x.hinges, x.X).value(x.X);
+  const double reference = plain_energy(bunny);
+  std::cout << "  tiled energy " << E << ", plain sum " << reference << std::endl;
+  CHECK(std::abs(E - reference) <= 1e-12 * reference);
+
+  // Renumbered in reverse: other tiles, the same energy up to the order of the sums.
+  const std::size_t n = num_vertices(bunny);
+  CF::Points reversed(x.X.rows(), 3);
+  for(std::size_t i = 0; i < n; ++i)
+    reversed.row(static_cast<Eigen::Index>(n - 1 - i)) = x.X.row(static_cast<Eigen::Index>(i));
+  auto reversed_index = bunny.add_property_map<Mesh::Vertex_index, std::size_t>("v:reversed").first;
+  for(auto v : vertices(bunny))
+    reversed_index[v] = n - 1 - std::size_t(v.idx());
+  const CF::Hinge_mesh reversed_hinges(bunny, reversed_index);
+  CHECK(std::abs(CF::Bending_energy(reversed_hinges, reversed).value(reversed) - E) <= 1e-12 * E);
+
+  check_gradient(bunny, 600, "noisy bunny, many tiles (600 coordinates)");
+}
+
 // Coordinates far outside the range where squared areas fit in double.
 void check_extreme_scales()
 {
@@ -263,6 +313,7 @@ int main()
   check_zero_on_planes();
   check_invariance();
   check_gradients();
+  check_tiled_evaluation();
   check_extreme_scales();
   check_degenerate_triangles();
   check_stiffness();

@@ -10,6 +10,7 @@
 // Two notions of "active" serve the solvers: every vertex on its boundary (the face of Omega
 // that contains X, for the Newton method's subspace step), or only those that the descent
 // direction -G pushes outwards (the binding constraints, for the quasi-Newton method).
+// Both passes run in parallel over the blocks of Parallel_for.h, each block listing its own.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_H
@@ -34,35 +35,54 @@ public:
   // Every vertex of X on the boundary of its set.
   void compute(const Bound& bound, const Points& X)
   {
-    m_active.clear();
-    Face face;
-    for(std::size_t i = 0; i < static_cast<std::size_t>(X.rows()); ++i)
-      if(bound.is_on_boundary(X, i, face))
-        m_active.emplace_back(static_cast<Index>(i), face);
+    collect(X, [&](std::size_t i, Face& face) { return bound.is_on_boundary(X, i, face); });
   }
 
   // The vertices of X that the descent direction -G pushes out of their set, with the part
   // of the face that blocks them.
   void compute(const Bound& bound, const Points& X, const Points& G)
   {
-    m_active.clear();
-    Face face;
-    for(std::size_t i = 0; i < static_cast<std::size_t>(X.rows()); ++i)
-      if(bound.is_on_boundary(X, i, face) && Bound::keep_blocked(face, point(G, i)))
-        m_active.emplace_back(static_cast<Index>(i), face);
+    collect(X, [&](std::size_t i, Face& face) {
+      return bound.is_on_boundary(X, i, face) && Bound::keep_blocked(face, point(G, i));
+    });
   }
 
   // V restricted to the face: its components that would leave it are removed.
   void restrict(Points& V) const
   {
-    for(const auto& a : m_active)
-      Bound::restrict(a.second, point(V, a.first));
+    parallel_for_blocks(m_size, [&](std::size_t, std::size_t, std::size_t b) {
+      for(const auto& a : m_blocks[b])
+        Bound::restrict(a.second, point(V, a.first));
+    });
   }
 
-  std::size_t size() const { return m_active.size(); }
+  std::size_t size() const
+  {
+    std::size_t count = 0;
+    for(const auto& block : m_blocks)
+      count += block.size();
+    return count;
+  }
 
 private:
-  std::vector<std::pair<Index, Face> > m_active;
+  // The vertices for which `active(i, face)` holds, listed per block of Parallel_for.h.
+  template <typename Active>
+  void collect(const Points& X, const Active& active)
+  {
+    m_size = static_cast<std::size_t>(X.rows());
+    m_blocks.resize(number_of_blocks(m_size));
+    parallel_for_blocks(m_size, [&](std::size_t begin, std::size_t end, std::size_t b) {
+      auto& block = m_blocks[b];
+      block.clear();
+      Face face;
+      for(std::size_t i = begin; i < end; ++i)
+        if(active(i, face))
+          block.emplace_back(static_cast<Index>(i), face);
+    });
+  }
+
+  std::size_t m_size = 0; // the number of vertices
+  std::vector<std::vector<std::pair<Index, Face> > > m_blocks;
 };
 
 } // namespace Constrained_fairing

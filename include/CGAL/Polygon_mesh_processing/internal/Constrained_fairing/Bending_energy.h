@@ -25,14 +25,15 @@
 //    one, and its hinges cost about as much as a bend between unit normals 60 degrees apart.
 // The energy and its gradient are then finite on every configuration of the points.
 //
-// Evaluation. The energy and its gradient are the solver's main cost, so they are computed
-// in passes that run in parallel (Parallel_for.h) with no allocation once the buffers have
-// their sizes: the triangles' normals and areas; the hinges, each computed once, adding its
-// terms to its two triangles; per vertex, the gradient gathered from its corners and edges.
-// The hinges are coloured so that no two of a colour share a triangle (at most five colours,
-// a triangle having at most three hinges), and the colours are passed one after the other:
-// within one, every triangle is written by one hinge only, and each triangle sums its
-// hinges' terms in the same order whatever the number of threads.
+// Evaluation. The energy and its gradient are the solver's main cost. On large meshes it is
+// the memory traffic that costs, not the arithmetic, so the mesh is cut into tiles of
+// consecutive vertices (which the Hilbert order makes compact patches) whose data fits in a
+// core's cache, and each tile is evaluated in one go: the normals and areas of the triangles it
+// needs, its triangles' hinges, then the gradient of its vertices. A triangle or hinge at a
+// tile's border is computed by both tiles; its energy counts in the tile of its first vertex
+// only. The tiles run in parallel (Parallel_for.h), each in a scratch buffer of its worker,
+// with no allocation once the buffers have their sizes. Every sum runs in an order fixed by the
+// tiles, so the results are the same whatever the number of threads.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
@@ -78,25 +79,31 @@ public:
   static constexpr double area_regularization = 1e-9;
   // Relative to a triangle's longest squared edge.
   static constexpr double degenerate_area = 1e-6;
+  // Vertices per tile: with their triangles and hinges, some 0.5 MB of scratch, which stays in
+  // a core's cache.
+  static constexpr std::size_t tile_size = 4096;
 
   // X0: the input points, which fix the regularization and the hinges left out.
   Bending_energy(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_scale(unit_scale(X0))
   {
-    compute_triangles(X0);
+    scale_points(X0);
+    const Points& P = *m_points;
     const std::size_t nt = m_mesh.triangles.size();
-    double sum = 0; // of the unregularized doubled areas, delta being 0 so far
+    double sum = 0; // of the unregularized doubled areas
     std::vector<bool> degenerate(nt);
     for(std::size_t f = 0; f < nt; ++f)
     {
-      sum += m_frame[f].l;
       const auto& v = m_mesh.triangles[f];
+      const Eigen::Vector3d p0 = point(P, v[0]);
+      const double l = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0).norm();
+      sum += l;
       double longest = 0;
       for(int k = 0; k < 3; ++k)
-        longest = (std::max)(longest, (point(*m_points, v[k]) - point(*m_points, v[(k + 1) % 3])).squaredNorm());
-      degenerate[f] = !(m_frame[f].l > degenerate_area * longest);
+        longest = (std::max)(longest, (point(P, v[k]) - point(P, v[(k + 1) % 3])).squaredNorm());
+      degenerate[f] = !(l > degenerate_area * longest);
     }
     m_delta = nt == 0 ? 0 : area_regularization * sum / double(nt);
-    build_adjacency(degenerate);
+    build_tiles(degenerate);
   }
 
   // False if the input has no area at all (in double): then the regularization vanishes
@@ -108,8 +115,11 @@ public:
 
   double value(const Points& X)
   {
-    compute_triangles(X);
-    return hinge_pass<false>();
+    scale_points(X);
+    m_workers.for_each(m_tiles.size(), [&](std::size_t t, std::size_t worker) {
+      m_partial[t] = evaluate_tile<false>(m_tiles[t], m_scratch[worker], nullptr, nullptr);
+    });
+    return sum_of_partials();
   }
 
   // Returns the energy and writes its gradient to G (resized to X's shape). With
@@ -131,56 +141,38 @@ public:
   // what the quasi-Newton method scales its steps by.
   double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales = nullptr)
   {
-    compute_triangles(X);
-    const double energy = hinge_pass<true>();
+    scale_points(X);
     G.resize(X.rows(), 3);
     if(scales)
     {
       scales->stiffness.resize(X.rows());
       scales->reach.resize(X.rows());
     }
-    const Points& P = *m_points;
-    const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
-    parallel_for_blocks(m_mesh.number_of_vertices, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        Eigen::Vector3d g = Eigen::Vector3d::Zero();
-        double k_normal = 0, height2 = std::numeric_limits<double>::infinity();
-        for(Index c = m_corner_begin[i]; c < m_corner_begin[i + 1]; ++c)
-        {
-          const Index f = m_corners[c] / 3, k = m_corners[c] % 3;
-          const auto& v = m_mesh.triangles[f];
-          const Eigen::Vector3d opposite = point(P, v[(k + 2) % 3]) - point(P, v[(k + 1) % 3]);
-          g += m_coefficient[f].cross(opposite);
-          const double l2 = m_frame[f].l * m_frame[f].l, o2 = opposite.squaredNorm();
-          k_normal += m_hinge_weight[f] * o2 / l2;
-          if(o2 > 0)
-            height2 = (std::min)(height2, l2 / o2);
-        }
-        for(Index c = m_endpoint_begin[i]; c < m_endpoint_begin[i + 1]; ++c)
-        {
-          const Index h = m_endpoints[c] / 2;
-          const auto& v = m_mesh.hinges[h].v;
-          const Eigen::Vector3d e = point(P, v[1]) - point(P, v[0]);
-          if(m_endpoints[c] % 2 == 0)
-            g -= m_edge_factor[h] * e;
-          else
-            g += m_edge_factor[h] * e;
-        }
-        point(G, i) = scale == 1 ? g : Eigen::Vector3d(scale * g);
-        if(scales)
-        {
-          scales->stiffness[static_cast<Eigen::Index>(i)] = scale * scale * k_normal;
-          scales->reach[static_cast<Eigen::Index>(i)] = std::sqrt(height2) / scale;
-        }
-      }
+    m_workers.for_each(m_tiles.size(), [&](std::size_t t, std::size_t worker) {
+      m_partial[t] = evaluate_tile<true>(m_tiles[t], m_scratch[worker], &G, scales);
     });
-    return energy;
+    return sum_of_partials();
   }
 
 private:
-  // Of the hinges, so that no two of a colour share a triangle.
-  static constexpr std::size_t max_colours = 5;
+  // A hinge of a tile: the hinge, and where its two triangles are in the tile's list.
+  struct Tile_hinge
+  {
+    Index hinge;
+    std::array<Index, 2> f;
+  };
+
+  // The vertices [vertex_begin, vertex_end); the triangles it needs, m_tile_triangles[
+  // triangle_begin, triangle_end), of which the first up to `owned_triangle_end` contain one of
+  // its vertices and the others share a hinge with one of them; their hinges,
+  // m_tile_hinges[hinge_begin, hinge_end), of which those up to `owned_hinge_end` start at one of
+  // its vertices and count in its energy.
+  struct Tile
+  {
+    std::size_t vertex_begin, vertex_end;
+    std::size_t triangle_begin, owned_triangle_end, triangle_end;
+    std::size_t hinge_begin, owned_hinge_end, hinge_end;
+  };
 
   // A triangle's regularized doubled area l and unit normal n.
   struct Frame
@@ -189,77 +181,144 @@ private:
     double l;
   };
 
-  // The counted hinges in colour order, and for each vertex its corners (3 f + k) and the
-  // hinges it ends (2 h + end), both in CSR form.
-  void build_adjacency(const std::vector<bool>& degenerate)
+  // What a tile computes, per triangle and hinge of the tile.
+  struct Scratch
   {
-    const std::size_t n = m_mesh.number_of_vertices;
-    m_corner_begin.assign(n + 1, 0);
-    m_endpoint_begin.assign(n + 1, 0);
-    for(const auto& t : m_mesh.triangles)
-      for(Index v : t)
-        ++m_corner_begin[v + 1];
-    // Greedy colouring: a hinge takes the smallest colour that no other hinge of its two
-    // triangles has yet; the hinges are then listed colour by colour, in index order.
-    std::vector<std::uint8_t> colour(m_mesh.hinges.size(), 0);
-    std::vector<std::uint8_t> used(m_mesh.triangles.size(), 0); // colours taken, as bits
-    std::array<std::size_t, max_colours + 1> count{};
+    std::vector<Frame> frame;
+    std::vector<Eigen::Vector3d> coefficient; // the triangle's a
+    std::vector<double> hinge_weight;         // the triangle's sum of w_h^2
+    std::vector<double> edge_factor;          // the hinge's 2 dE/dL
+  };
+
+  // The tiles, and for each vertex its corners (3 t + k, t a triangle of its tile's list) and
+  // the hinges it ends (2 h + end, h a hinge of its tile's list), in CSR form.
+  void build_tiles(const std::vector<bool>& degenerate)
+  {
+    const std::size_t n = m_mesh.number_of_vertices, nt = m_mesh.triangles.size();
+    constexpr Index none = ~Index(0);
+
+    // The counted hinges of each triangle and of each vertex, in index order.
+    std::vector<std::array<Index, 3> > triangle_hinges(nt, {none, none, none});
+    std::vector<Index> vertex_hinge_begin(n + 1, 0), vertex_hinges;
     m_number_of_hinges = 0;
+    for(const Hinge& hinge : m_mesh.hinges)
+      if(!degenerate[hinge.f[0]] && !degenerate[hinge.f[1]])
+      {
+        ++m_number_of_hinges;
+        ++vertex_hinge_begin[hinge.v[0] + 1];
+        ++vertex_hinge_begin[hinge.v[1] + 1];
+      }
+    for(std::size_t i = 0; i < n; ++i)
+      vertex_hinge_begin[i + 1] += vertex_hinge_begin[i];
+    vertex_hinges.resize(vertex_hinge_begin[n]);
+    std::vector<Index> next(vertex_hinge_begin.begin(), vertex_hinge_begin.end() - 1);
     for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
     {
       const Hinge& hinge = m_mesh.hinges[h];
       if(degenerate[hinge.f[0]] || degenerate[hinge.f[1]])
         continue;
-      ++m_number_of_hinges;
-      const unsigned taken = used[hinge.f[0]] | used[hinge.f[1]];
-      std::uint8_t c = 0;
-      while(taken & (1u << c))
-        ++c;
-      colour[h] = c;
-      ++count[c + 1];
       for(Index side = 0; side < 2; ++side)
       {
-        used[hinge.f[side]] = static_cast<std::uint8_t>(used[hinge.f[side]] | (1u << c));
-        ++m_endpoint_begin[hinge.v[side] + 1];
+        vertex_hinges[next[hinge.v[side]]++] = static_cast<Index>(2 * h + side);
+        auto& slots = triangle_hinges[hinge.f[side]];
+        *std::find(slots.begin(), slots.end(), none) = static_cast<Index>(h);
       }
     }
-    for(std::size_t c = 0; c < max_colours; ++c)
-      count[c + 1] += count[c];
-    m_colour_begin.assign(count.begin(), count.end());
-    m_hinge_order.resize(m_number_of_hinges);
-    for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
-    {
-      const Hinge& hinge = m_mesh.hinges[h];
-      if(!degenerate[hinge.f[0]] && !degenerate[hinge.f[1]])
-        m_hinge_order[count[colour[h]]++] = static_cast<Index>(h);
-    }
+    // The corners of each vertex, in triangle order.
+    std::vector<Index> vertex_corner_begin(n + 1, 0), vertex_corners;
+    for(const auto& t : m_mesh.triangles)
+      for(Index v : t)
+        ++vertex_corner_begin[v + 1];
     for(std::size_t i = 0; i < n; ++i)
-    {
-      m_corner_begin[i + 1] += m_corner_begin[i];
-      m_endpoint_begin[i + 1] += m_endpoint_begin[i];
-    }
-    m_corners.resize(m_corner_begin[n]);
-    m_endpoints.resize(m_endpoint_begin[n]);
-    std::vector<Index> next(m_corner_begin.begin(), m_corner_begin.end() - 1);
-    for(std::size_t f = 0; f < m_mesh.triangles.size(); ++f)
+      vertex_corner_begin[i + 1] += vertex_corner_begin[i];
+    vertex_corners.resize(vertex_corner_begin[n]);
+    next.assign(vertex_corner_begin.begin(), vertex_corner_begin.end() - 1);
+    for(std::size_t f = 0; f < nt; ++f)
       for(Index k = 0; k < 3; ++k)
-        m_corners[next[m_mesh.triangles[f][k]]++] = static_cast<Index>(3 * f + k);
-    next.assign(m_endpoint_begin.begin(), m_endpoint_begin.end() - 1);
-    for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
+        vertex_corners[next[m_mesh.triangles[f][k]]++] = static_cast<Index>(3 * f + k);
+
+    // Each tile's triangles and hinges, numbered in the tile by `slot` (valid where `stamp` is
+    // the tile's number).
+    std::vector<Index> triangle_stamp(nt, none), triangle_slot(nt), hinge_stamp(m_mesh.hinges.size(), none),
+        hinge_slot(m_mesh.hinges.size());
+    m_corner_begin.assign(vertex_corner_begin.begin(), vertex_corner_begin.end());
+    m_corners.resize(vertex_corners.size());
+    m_endpoint_begin.assign(vertex_hinge_begin.begin(), vertex_hinge_begin.end());
+    m_endpoints.resize(vertex_hinges.size());
+    std::size_t largest_triangles = 0, largest_hinges = 0;
+    std::vector<Tile_hinge> others;
+    for(std::size_t begin = 0; begin < n; begin += tile_size)
     {
-      const Hinge& hinge = m_mesh.hinges[h];
-      if(!degenerate[hinge.f[0]] && !degenerate[hinge.f[1]])
-        for(Index end = 0; end < 2; ++end)
-          m_endpoints[next[hinge.v[end]]++] = static_cast<Index>(2 * h + end);
+      const Index t = static_cast<Index>(m_tiles.size());
+      Tile tile;
+      tile.vertex_begin = begin;
+      tile.vertex_end = (std::min)(begin + tile_size, n);
+      tile.triangle_begin = m_tile_triangles.size();
+      const auto add_triangle = [&](Index f) {
+        if(triangle_stamp[f] == t)
+          return;
+        triangle_stamp[f] = t;
+        triangle_slot[f] = static_cast<Index>(m_tile_triangles.size() - tile.triangle_begin);
+        m_tile_triangles.push_back(f);
+      };
+      for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
+        for(Index c = vertex_corner_begin[i]; c < vertex_corner_begin[i + 1]; ++c)
+          add_triangle(vertex_corners[c] / 3);
+      tile.owned_triangle_end = m_tile_triangles.size();
+      // The hinges of the tile's triangles, those starting in the tile first, each part in
+      // index order.
+      tile.hinge_begin = m_tile_hinges.size();
+      others.clear();
+      std::vector<Index> hinges;
+      for(std::size_t k = tile.triangle_begin; k < tile.owned_triangle_end; ++k)
+        for(Index h : triangle_hinges[m_tile_triangles[k]])
+          if(h != none && hinge_stamp[h] != t)
+          {
+            hinge_stamp[h] = t;
+            hinges.push_back(h);
+          }
+      std::sort(hinges.begin(), hinges.end());
+      for(Index h : hinges)
+      {
+        const Hinge& hinge = m_mesh.hinges[h];
+        add_triangle(hinge.f[0]);
+        add_triangle(hinge.f[1]);
+        const Tile_hinge local{h, {triangle_slot[hinge.f[0]], triangle_slot[hinge.f[1]]}};
+        if(hinge.v[0] >= tile.vertex_begin && hinge.v[0] < tile.vertex_end)
+          m_tile_hinges.push_back(local);
+        else
+          others.push_back(local);
+      }
+      tile.owned_hinge_end = m_tile_hinges.size();
+      m_tile_hinges.insert(m_tile_hinges.end(), others.begin(), others.end());
+      tile.triangle_end = m_tile_triangles.size();
+      tile.hinge_end = m_tile_hinges.size();
+      for(std::size_t k = tile.hinge_begin; k < tile.hinge_end; ++k)
+        hinge_slot[m_tile_hinges[k].hinge] = static_cast<Index>(k - tile.hinge_begin);
+      for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
+      {
+        for(Index c = vertex_corner_begin[i]; c < vertex_corner_begin[i + 1]; ++c)
+          m_corners[c] = 3 * triangle_slot[vertex_corners[c] / 3] + vertex_corners[c] % 3;
+        for(Index c = vertex_hinge_begin[i]; c < vertex_hinge_begin[i + 1]; ++c)
+          m_endpoints[c] = 2 * hinge_slot[vertex_hinges[c] / 2] + vertex_hinges[c] % 2;
+      }
+      largest_triangles = (std::max)(largest_triangles, tile.triangle_end - tile.triangle_begin);
+      largest_hinges = (std::max)(largest_hinges, tile.hinge_end - tile.hinge_begin);
+      m_tiles.push_back(tile);
     }
-    m_coefficient.resize(m_mesh.triangles.size());
-    m_hinge_weight.resize(m_mesh.triangles.size());
-    m_edge_factor.resize(m_mesh.hinges.size());
+    m_partial.resize(m_tiles.size());
+    m_scratch.resize(m_workers.size());
+    for(Scratch& scratch : m_scratch)
+    {
+      scratch.frame.resize(largest_triangles);
+      scratch.coefficient.resize(largest_triangles);
+      scratch.hinge_weight.resize(largest_triangles);
+      scratch.edge_factor.resize(largest_hinges);
+    }
   }
 
-  // The scaled points s X, and the regularized doubled area l and normal n of every
-  // triangle.
-  void compute_triangles(const Points& X)
+  // The scaled points s X (X itself when the scale is 1).
+  void scale_points(const Points& X)
   {
     if(m_scale == 1)
       m_points = &X;
@@ -268,80 +327,118 @@ private:
       m_scaled.noalias() = m_scale * X;
       m_points = &m_scaled;
     }
-    const Points& P = *m_points;
-    m_frame.resize(m_mesh.triangles.size());
-    parallel_for_blocks(m_mesh.triangles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t f = begin; f < end; ++f)
-      {
-        const auto& v = m_mesh.triangles[f];
-        const Eigen::Vector3d p0 = point(P, v[0]);
-        const Eigen::Vector3d N = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0);
-        const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
-        m_frame[f].l = l;
-        m_frame[f].n = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
-      }
-    });
   }
 
-  // The energy, colour by colour (so that value() and value_and_gradient() add the same
-  // terms in the same order); with `gradient`, also each triangle's coefficient a and sum of
-  // w_h^2, and each hinge's edge factor 2 dE/dL.
+  // The tile's energy (its own hinges' terms, in order); with `gradient`, also the gradient,
+  // and the scales if asked, of its vertices.
   template <bool gradient>
-  double hinge_pass()
+  double evaluate_tile(const Tile& tile, Scratch& scratch, Points* G, Vertex_scales* scales) const
   {
-    if(gradient)
-      parallel_for_blocks(m_mesh.triangles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-        for(std::size_t f = begin; f < end; ++f)
-        {
-          m_coefficient[f].setZero();
-          m_hinge_weight[f] = 0;
-        }
-      });
-    double energy = 0;
-    for(std::size_t c = 0; c < max_colours; ++c)
+    const Points& P = *m_points;
+    const Index* triangles = m_tile_triangles.data() + tile.triangle_begin;
+    // The energy needs the frames of the tile's own hinges' triangles, which contain a vertex
+    // of the tile; the gradient all of them.
+    const std::size_t frames = (gradient ? tile.triangle_end : tile.owned_triangle_end) - tile.triangle_begin;
+    for(std::size_t k = 0; k < frames; ++k)
     {
-      const std::size_t first = m_colour_begin[c];
-      energy += parallel_sum(m_colour_begin[c + 1] - first, m_partial, [&](std::size_t begin, std::size_t end) {
-        double sum = 0;
-        for(std::size_t k = first + begin; k < first + end; ++k)
-        {
-          const Index h = m_hinge_order[k];
-          const Hinge& hinge = m_mesh.hinges[h];
-          const Frame& F1 = m_frame[hinge.f[0]];
-          const Frame& F2 = m_frame[hinge.f[1]];
-          const Eigen::Vector3d e = point(*m_points, hinge.v[1]) - point(*m_points, hinge.v[0]);
-          const Eigen::Vector3d d = F1.n - F2.n;
-          const double L = e.squaredNorm(), S = F1.l + F2.l, C = 0.5 * d.squaredNorm();
-          const double kC = 1.5 * L / S; // dE/dC
-          sum += kC * C;
-          if(!gradient)
-            continue;
-          const double kS = -kC * C / S; // dE/dS
-          m_coefficient[hinge.f[0]] += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
-          m_coefficient[hinge.f[1]] -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
-          m_hinge_weight[hinge.f[0]] += 0.5 * kC;
-          m_hinge_weight[hinge.f[1]] += 0.5 * kC;
-          m_edge_factor[h] = 3 * C / S;
-        }
-        return sum;
-      });
+      const auto& v = m_mesh.triangles[triangles[k]];
+      const Eigen::Vector3d p0 = point(P, v[0]);
+      const Eigen::Vector3d N = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0);
+      const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
+      scratch.frame[k].l = l;
+      scratch.frame[k].n = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
+      if(gradient)
+      {
+        scratch.coefficient[k].setZero();
+        scratch.hinge_weight[k] = 0;
+      }
+    }
+
+    double energy = 0;
+    const std::size_t owned = tile.owned_hinge_end - tile.hinge_begin;
+    const std::size_t hinges = (gradient ? tile.hinge_end : tile.owned_hinge_end) - tile.hinge_begin;
+    for(std::size_t j = 0; j < hinges; ++j)
+    {
+      const Tile_hinge& local = m_tile_hinges[tile.hinge_begin + j];
+      const Hinge& hinge = m_mesh.hinges[local.hinge];
+      const Frame& F1 = scratch.frame[local.f[0]];
+      const Frame& F2 = scratch.frame[local.f[1]];
+      const Eigen::Vector3d e = point(P, hinge.v[1]) - point(P, hinge.v[0]);
+      const Eigen::Vector3d d = F1.n - F2.n;
+      const double L = e.squaredNorm(), S = F1.l + F2.l, C = 0.5 * d.squaredNorm();
+      const double kC = 1.5 * L / S; // dE/dC
+      if(j < owned)
+        energy += kC * C;
+      if(!gradient)
+        continue;
+      const double kS = -kC * C / S; // dE/dS
+      scratch.coefficient[local.f[0]] += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
+      scratch.coefficient[local.f[1]] -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+      scratch.hinge_weight[local.f[0]] += 0.5 * kC;
+      scratch.hinge_weight[local.f[1]] += 0.5 * kC;
+      scratch.edge_factor[j] = 3 * C / S;
+    }
+    if(!gradient)
+      return energy;
+
+    const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
+    for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
+    {
+      Eigen::Vector3d g = Eigen::Vector3d::Zero();
+      double k_normal = 0, height2 = std::numeric_limits<double>::infinity();
+      for(Index c = m_corner_begin[i]; c < m_corner_begin[i + 1]; ++c)
+      {
+        const Index k = m_corners[c] / 3, corner = m_corners[c] % 3;
+        const auto& v = m_mesh.triangles[triangles[k]];
+        const Eigen::Vector3d opposite = point(P, v[(corner + 2) % 3]) - point(P, v[(corner + 1) % 3]);
+        g += scratch.coefficient[k].cross(opposite);
+        const double l2 = scratch.frame[k].l * scratch.frame[k].l, o2 = opposite.squaredNorm();
+        k_normal += scratch.hinge_weight[k] * o2 / l2;
+        if(o2 > 0)
+          height2 = (std::min)(height2, l2 / o2);
+      }
+      for(Index c = m_endpoint_begin[i]; c < m_endpoint_begin[i + 1]; ++c)
+      {
+        const Index j = m_endpoints[c] / 2;
+        const auto& v = m_mesh.hinges[m_tile_hinges[tile.hinge_begin + j].hinge].v;
+        const Eigen::Vector3d e = point(P, v[1]) - point(P, v[0]);
+        if(m_endpoints[c] % 2 == 0)
+          g -= scratch.edge_factor[j] * e;
+        else
+          g += scratch.edge_factor[j] * e;
+      }
+      point(*G, i) = scale == 1 ? g : Eigen::Vector3d(scale * g);
+      if(scales)
+      {
+        scales->stiffness[static_cast<Eigen::Index>(i)] = scale * scale * k_normal;
+        scales->reach[static_cast<Eigen::Index>(i)] = std::sqrt(height2) / scale;
+      }
     }
     return energy;
+  }
+
+  double sum_of_partials() const
+  {
+    double sum = 0;
+    for(double s : m_partial)
+      sum += s;
+    return sum;
   }
 
   const Hinge_mesh& m_mesh;
   std::size_t m_number_of_hinges = 0; // those without a degenerate triangle
   double m_scale, m_delta = 0;
-  std::vector<Index> m_hinge_order;         // the counted hinges, colour by colour
-  std::vector<std::size_t> m_colour_begin; // where each colour starts in m_hinge_order
+  std::vector<Tile> m_tiles;
+  std::vector<Index> m_tile_triangles;
+  std::vector<Tile_hinge> m_tile_hinges;
   std::vector<Index> m_corner_begin, m_corners, m_endpoint_begin, m_endpoints;
-  // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and per
-  // triangle and hinge
+  Worker_pool m_workers;
+  std::vector<Scratch> m_scratch; // one per worker
+  // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and the
+  // tiles' energies
   const Points* m_points = nullptr;
   Points m_scaled;
-  std::vector<Frame> m_frame;
-  std::vector<Eigen::Vector3d> m_coefficient;
-  std::vector<double> m_hinge_weight, m_edge_factor, m_partial;
+  std::vector<double> m_partial;
 };
 
 } // namespace Constrained_fairing

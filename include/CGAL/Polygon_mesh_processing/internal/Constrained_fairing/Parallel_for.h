@@ -10,12 +10,14 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PARALLEL_FOR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PARALLEL_FOR_H
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 namespace CGAL {
@@ -64,6 +66,41 @@ double parallel_sum(std::size_t n, std::vector<double>& partial, const F& f)
     sum += s;
   return sum;
 }
+
+// Runs items that need a scratch buffer each: for_each(n, f) calls f(item, worker) for every
+// item in [0, n), `worker` in [0, size()) being the same for no two items that run at once: the
+// index of the thread in TBB's current arena, whose size is taken at construction (a call from
+// a larger arena runs sequentially). An item's result must not depend on which worker runs it.
+class Worker_pool
+{
+public:
+  std::size_t size() const { return m_size; }
+
+  template <typename F>
+  void for_each(std::size_t n, const F& f) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(n > 1 && m_size > 1 && static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()) <= m_size)
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        const auto worker = static_cast<std::size_t>(tbb::this_task_arena::current_thread_index());
+        for(std::size_t item = r.begin(); item != r.end(); ++item)
+          f(item, worker);
+      });
+      return;
+    }
+#endif
+    for(std::size_t item = 0; item < n; ++item)
+      f(item, 0);
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  std::size_t m_size = static_cast<std::size_t>((std::max)(1, tbb::this_task_arena::max_concurrency()));
+#else
+  std::size_t m_size = 1;
+#endif
+};
 
 } // namespace Constrained_fairing
 } // namespace internal

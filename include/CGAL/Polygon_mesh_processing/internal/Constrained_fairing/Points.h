@@ -70,6 +70,43 @@ void add_scaled(Points& y, double s, const X& x)
 // not a single point fit in double; otherwise the one that brings it into [1/2, 1), for meshes
 // in kilometres or nanometres of absurd units. A power of two scales every intermediate
 // result exactly.
+// Y = s X, in parallel (Y may be X).
+inline void scale_to(Points& Y, double s, const Points& X)
+{
+  Y.resize(X.rows(), 3);
+  parallel_for_blocks(static_cast<std::size_t>(X.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+    for(std::size_t i = begin; i < end; ++i)
+      point(Y, i) = s * point(X, i);
+  });
+}
+
+// Y = X + t V, in parallel; false if a coordinate of Y is not finite.
+inline bool step_to(Points& Y, const Points& X, double t, const Points& V, std::vector<double>& partial)
+{
+  Y.resize(X.rows(), 3);
+  const double finite = parallel_sum(static_cast<std::size_t>(X.rows()), partial, [&](std::size_t begin, std::size_t end) {
+    bool all = true;
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      point(Y, i) = point(X, i) + t * point(V, i);
+      all = all && point(Y, i).allFinite();
+    }
+    return all ? 1. : 0.;
+  });
+  return finite == double(partial.size());
+}
+
+// <G, Y - X>
+inline double dot_with_difference(const Points& G, const Points& Y, const Points& X, std::vector<double>& partial)
+{
+  return parallel_sum(static_cast<std::size_t>(G.rows()), partial, [&](std::size_t begin, std::size_t end) {
+    double sum = 0;
+    for(std::size_t i = begin; i < end; ++i)
+      sum += point(G, i).dot(point(Y, i) - point(X, i));
+    return sum;
+  });
+}
+
 inline double unit_scale(const Points& X)
 {
   const double largest = X.size() > 0 ? X.cwiseAbs().maxCoeff() : 0;

@@ -86,7 +86,7 @@ public:
       double slope = 0;
       if(m_pairs > 0)
       {
-        m_D.noalias() = -m_G;
+        scale_to(m_D, -1, m_G);
         m_active.restrict(m_D);
         apply_inverse_hessian(m_D);
         m_active.restrict(m_D);
@@ -96,16 +96,16 @@ public:
       if(m_pairs == 0 || !(slope < 0))
       {
         m_pairs = 0;
-        m_D.noalias() = -m_G;
+        scale_to(m_D, -1, m_G);
         m_active.restrict(m_D);
         precondition(m_D, m_D);
-        m_D *= t_gradient;
+        scale_to(m_D, t_gradient, m_D);
         limit_to_reach(m_D);
         slope = dot(m_D, m_G, m_partial);
       }
 
       const auto sufficient = [&](double e, const Points& Y) {
-        return e < E + sufficient_decrease * (m_G.cwiseProduct(Y - X)).sum();
+        return e < E + sufficient_decrease * dot_with_difference(m_G, Y, X, m_partial);
       };
       Projected_line_search::Accepted accepted{m_X};
       if(!m_search.backtrack(X, m_D, 1., E, slope, m_bound, m_energy, sufficient, accepted, m_G_next, m_scales_next))
@@ -161,9 +161,20 @@ private:
   void add_pair(const Points& X, const Points& G)
   {
     const std::size_t slot = (m_newest + 1) % memory;
-    m_s[slot] = (m_X - X).cast<float>();
-    m_y[slot] = (m_G_next - G).cast<float>();
-    const double sy = dot(m_s[slot], m_y[slot], m_partial);
+    Float_points &s = m_s[slot], &y = m_y[slot];
+    s.resize(X.rows(), 3);
+    y.resize(X.rows(), 3);
+    const double sy = parallel_sum(static_cast<std::size_t>(X.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
+      double sum = 0;
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const auto row = static_cast<Eigen::Index>(i);
+        s.row(row) = (point(m_X, i) - point(X, i)).transpose().cast<float>();
+        y.row(row) = (point(m_G_next, i) - point(G, i)).transpose().cast<float>();
+        sum += s.row(row).cast<double>().dot(y.row(row).cast<double>());
+      }
+      return sum;
+    });
     if(!(sy > 0))
     {
       if(m_pairs == memory) // the slot held the oldest pair
@@ -188,7 +199,7 @@ private:
     }
     const double gamma = 1 / (m_rho[m_newest] * inverse_stiffness_norm2(m_scales, m_y[m_newest], m_partial));
     precondition(D, D);
-    D *= gamma;
+    scale_to(D, gamma, D);
     for(std::size_t k = m_pairs; k-- > 0;) // oldest to newest
     {
       const std::size_t j = (m_newest + memory - k) % memory;

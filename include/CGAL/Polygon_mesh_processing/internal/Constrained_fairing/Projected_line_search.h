@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -85,8 +86,7 @@ public:
     double t = t0;
     for(int k = 0; k < max_halvings; ++k)
     {
-      accepted.point.noalias() = x + t * v;
-      if(accepted.point.allFinite())
+      if(step_to(accepted.point, x, t, v, m_partial))
       {
         bound.project(accepted.point);
         ++m_evaluations;
@@ -115,8 +115,7 @@ private:
   bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Fairing_objective& energy,
                 const Condition& holds)
   {
-    m_trial.noalias() = x + t * v;
-    if(!m_trial.allFinite()) // a step so long that it overflows is no candidate
+    if(!step_to(m_trial, x, t, v, m_partial)) // a step so long that it overflows is no candidate
       return false;
     bound.project(m_trial);
     ++m_evaluations;
@@ -132,6 +131,7 @@ private:
   }
 
   Points m_trial;
+  std::vector<double> m_partial;
   double m_trial_energy = 0;
   std::size_t m_evaluations = 0;
 };
