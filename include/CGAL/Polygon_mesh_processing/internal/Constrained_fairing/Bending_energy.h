@@ -79,8 +79,8 @@ public:
   static constexpr double area_regularization = 1e-9;
   // Relative to a triangle's longest squared edge.
   static constexpr double degenerate_area = 1e-6;
-  // Vertices per tile: with their triangles and hinges, some 0.5 MB of scratch, which stays in
-  // a core's cache.
+  // Vertices per tile: with their triangles and hinges, under a megabyte of scratch, which
+  // stays in a core's cache.
   static constexpr std::size_t tile_size = 4096;
 
   // X0: the input points, which fix the regularization and the hinges left out.

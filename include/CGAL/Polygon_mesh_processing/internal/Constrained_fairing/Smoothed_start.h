@@ -4,18 +4,17 @@
 // The starting point of the quasi-Newton method: a few steps of projected Taubin smoothing of
 // the input, x_i <- P(x_i + f (mean of its neighbours - x_i)), all vertices at once, f
 // alternately lambda > 0 and mu < 0. Plain Laplacian steps (f > 0 only) shrink the surface,
-// and inside the bound that shrinkage stays: on a noisy sphere in boxes the result ended
-// 0.021 from the true sphere against 0.0024 with Taubin's steps.
+// and inside the bound that shrinkage stays.
 //
 // Why: the bending energy is not convex, and descent from a terraced input stops in a poor
-// local minimum. Surface nets of a sphere on 1 x 1 x 3 voxels, each vertex in its cell: the
-// quasi-Newton method from the input stops at bending energy 45 (39 after 5000 iterations),
-// 0.64 voxel from the sphere; from 16 smoothing steps it reaches 6.7, 0.06 voxel from it.
-// Averaging with the neighbours moves each terrace as a whole towards the slope it stands for,
-// which no step that lowers the energy locally does. On noisy scans the smoothed start also
-// leads to lower minima (the noisy bunny at 0.5 h: 206 against 264); a step costs less than a
-// gradient evaluation. Neighbours are taken from the triangles (an interior edge
-// counts twice, a border edge once), so that border vertices are smoothed along the border.
+// local minimum: on surface nets of a sphere on 1 x 1 x 3 voxels, each vertex in its cell, the
+// quasi-Newton method from the input stays in the terraces, far from the sphere, and from the
+// smoothed start it ends close to it (test_voxel_workflow prints both). Averaging with the
+// neighbours moves each terrace as a whole towards the slope it stands for, which no step that
+// lowers the energy locally does. On noisy scans the smoothed start also leads to lower minima;
+// a step costs less than a gradient evaluation. Neighbours are taken from the triangles (an
+// interior edge counts twice, a border edge once), so that border vertices are smoothed along
+// the border.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H

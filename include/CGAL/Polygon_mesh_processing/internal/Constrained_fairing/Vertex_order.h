@@ -3,9 +3,9 @@
 //
 // The order in which the solver stores the vertices: along a Hilbert curve through their input
 // positions (CGAL::hilbert_sort). Every evaluation of the energy visits each triangle and
-// hinge with its vertices; in the order of a file, neighbours are often far apart in memory,
-// and on meshes of a million triangles the evaluation then waits on the memory more than it
-// computes (benchmark/fairing_scaling measures the evaluation). The order
+// hinge with its vertices, tile by tile, a tile being a run of consecutive vertices
+// (Bending_energy.h): in this order a tile is a compact patch of the surface, whose data fits
+// in a cache, while in the order of a file neighbours are often far apart in memory. The order
 // depends only on the positions and their order in `vertices(tmesh)`, so results stay
 // bit-identical run to run and across mesh data structures.
 
