@@ -8,7 +8,8 @@
 //  - every vertex stays in its cell, exactly;
 //  - on cubic voxels the distance to the true surface is below the clamped Laplacian's, with a
 //    lower bending energy, and on the sphere it falls at least 8x against the staircase (the
-//    elephant has detail at the voxel scale, which the bending energy flattens: about 3x);
+//    sphere is the bending energy's own minimizer, while on the elephant, whose curvature
+//    varies, the fairest surface in the cells departs from the true one: about 3x);
 //  - on 1 x 1 x 3 voxels the fairing does not stall in the terraces: it reaches a bending
 //    energy below that of the true surface's points clamped into the cells (a smooth
 //    configuration inside the same boxes), and below that of a descent from the staircase
