@@ -65,11 +65,6 @@ void add_scaled(Points& y, double s, const X& x)
   });
 }
 
-// The scale, a power of two, at which the energy and its Hessian are evaluated: 1 when the
-// largest coordinate of X is within [2^-100, 2^100], where squared areas of any mesh that is
-// not a single point fit in double; otherwise the one that brings it into [1/2, 1), for meshes
-// in kilometres or nanometres of absurd units. A power of two scales every intermediate
-// result exactly.
 // Y = s X, in parallel (Y may be X).
 inline void scale_to(Points& Y, double s, const Points& X)
 {
@@ -107,6 +102,11 @@ inline double dot_with_difference(const Points& G, const Points& Y, const Points
   });
 }
 
+// The scale, a power of two, at which the energy and its Hessian are evaluated: 1 when the
+// largest coordinate of X is within [2^-100, 2^100], where squared areas of any mesh that is
+// not a single point fit in double; otherwise the one that brings it into [1/2, 1), for meshes
+// in kilometres or nanometres of absurd units. A power of two scales every intermediate
+// result exactly.
 inline double unit_scale(const Points& X)
 {
   const double largest = X.size() > 0 ? X.cwiseAbs().maxCoeff() : 0;
