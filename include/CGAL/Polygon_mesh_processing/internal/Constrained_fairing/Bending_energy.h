@@ -164,9 +164,9 @@ private:
 
   // The vertices [vertex_begin, vertex_end); the triangles it needs, m_tile_triangles[
   // triangle_begin, triangle_end), of which the first up to `owned_triangle_end` contain one of
-  // its vertices and the others share a hinge with one of them; their hinges,
+  // its vertices (in index order) and the others share a hinge with one of them; their hinges,
   // m_tile_hinges[hinge_begin, hinge_end), of which those up to `owned_hinge_end` start at one of
-  // its vertices and count in its energy.
+  // its vertices and count in its energy (each part in index order).
   struct Tile
   {
     std::size_t vertex_begin, vertex_end;
@@ -187,66 +187,46 @@ private:
     std::vector<Frame> frame;
     std::vector<Eigen::Vector3d> coefficient; // the triangle's a
     std::vector<double> hinge_weight;         // the triangle's sum of w_h^2
-    std::vector<double> edge_factor;          // the hinge's 2 dE/dL
+    std::vector<Eigen::Vector3d> edge_term;   // the hinge's 2 dE/dL times its edge
   };
 
-  // The tiles, and for each vertex its corners (3 t + k, t a triangle of its tile's list) and
-  // the hinges it ends (2 h + end, h a hinge of its tile's list), in CSR form.
+  // The tiles: the triangles and hinges each needs.
   void build_tiles(const std::vector<bool>& degenerate)
   {
     const std::size_t n = m_mesh.number_of_vertices, nt = m_mesh.triangles.size();
     constexpr Index none = ~Index(0);
 
-    // The counted hinges of each triangle and of each vertex, in index order.
+    // The counted hinges of each triangle.
     std::vector<std::array<Index, 3> > triangle_hinges(nt, {none, none, none});
-    std::vector<Index> vertex_hinge_begin(n + 1, 0), vertex_hinges;
     m_number_of_hinges = 0;
-    for(const Hinge& hinge : m_mesh.hinges)
-      if(!degenerate[hinge.f[0]] && !degenerate[hinge.f[1]])
-      {
-        ++m_number_of_hinges;
-        ++vertex_hinge_begin[hinge.v[0] + 1];
-        ++vertex_hinge_begin[hinge.v[1] + 1];
-      }
-    for(std::size_t i = 0; i < n; ++i)
-      vertex_hinge_begin[i + 1] += vertex_hinge_begin[i];
-    vertex_hinges.resize(vertex_hinge_begin[n]);
-    std::vector<Index> next(vertex_hinge_begin.begin(), vertex_hinge_begin.end() - 1);
     for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
     {
       const Hinge& hinge = m_mesh.hinges[h];
       if(degenerate[hinge.f[0]] || degenerate[hinge.f[1]])
         continue;
-      for(Index side = 0; side < 2; ++side)
-      {
-        vertex_hinges[next[hinge.v[side]]++] = static_cast<Index>(2 * h + side);
-        auto& slots = triangle_hinges[hinge.f[side]];
-        *std::find(slots.begin(), slots.end(), none) = static_cast<Index>(h);
-      }
+      ++m_number_of_hinges;
+      for(Index f : hinge.f)
+        *std::find(triangle_hinges[f].begin(), triangle_hinges[f].end(), none) = static_cast<Index>(h);
     }
-    // The corners of each vertex, in triangle order.
-    std::vector<Index> vertex_corner_begin(n + 1, 0), vertex_corners;
+    // The triangles of each vertex.
+    std::vector<Index> vertex_triangle_begin(n + 1, 0), vertex_triangles;
     for(const auto& t : m_mesh.triangles)
       for(Index v : t)
-        ++vertex_corner_begin[v + 1];
+        ++vertex_triangle_begin[v + 1];
     for(std::size_t i = 0; i < n; ++i)
-      vertex_corner_begin[i + 1] += vertex_corner_begin[i];
-    vertex_corners.resize(vertex_corner_begin[n]);
-    next.assign(vertex_corner_begin.begin(), vertex_corner_begin.end() - 1);
+      vertex_triangle_begin[i + 1] += vertex_triangle_begin[i];
+    vertex_triangles.resize(vertex_triangle_begin[n]);
+    std::vector<Index> next(vertex_triangle_begin.begin(), vertex_triangle_begin.end() - 1);
     for(std::size_t f = 0; f < nt; ++f)
-      for(Index k = 0; k < 3; ++k)
-        vertex_corners[next[m_mesh.triangles[f][k]]++] = static_cast<Index>(3 * f + k);
+      for(Index v : m_mesh.triangles[f])
+        vertex_triangles[next[v]++] = static_cast<Index>(f);
 
-    // Each tile's triangles and hinges, numbered in the tile by `slot` (valid where `stamp` is
-    // the tile's number).
-    std::vector<Index> triangle_stamp(nt, none), triangle_slot(nt), hinge_stamp(m_mesh.hinges.size(), none),
-        hinge_slot(m_mesh.hinges.size());
-    m_corner_begin.assign(vertex_corner_begin.begin(), vertex_corner_begin.end());
-    m_corners.resize(vertex_corners.size());
-    m_endpoint_begin.assign(vertex_hinge_begin.begin(), vertex_hinge_begin.end());
-    m_endpoints.resize(vertex_hinges.size());
+    // Each tile's triangles, numbered in the tile by `slot` (valid where `stamp` is the tile's
+    // number), and hinges.
+    std::vector<Index> triangle_stamp(nt, none), triangle_slot(nt), hinge_stamp(m_mesh.hinges.size(), none);
     std::size_t largest_triangles = 0, largest_hinges = 0;
     std::vector<Tile_hinge> others;
+    std::vector<Index> owned, hinges;
     for(std::size_t begin = 0; begin < n; begin += tile_size)
     {
       const Index t = static_cast<Index>(m_tiles.size());
@@ -261,15 +241,21 @@ private:
         triangle_slot[f] = static_cast<Index>(m_tile_triangles.size() - tile.triangle_begin);
         m_tile_triangles.push_back(f);
       };
+      // The triangles of its vertices in index order: each vertex then gets its corners' terms
+      // in the same order whatever the tiles.
+      owned.clear();
       for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
-        for(Index c = vertex_corner_begin[i]; c < vertex_corner_begin[i + 1]; ++c)
-          add_triangle(vertex_corners[c] / 3);
+        owned.insert(owned.end(), vertex_triangles.begin() + vertex_triangle_begin[i],
+                     vertex_triangles.begin() + vertex_triangle_begin[i + 1]);
+      std::sort(owned.begin(), owned.end());
+      for(Index f : owned)
+        add_triangle(f);
       tile.owned_triangle_end = m_tile_triangles.size();
       // The hinges of the tile's triangles, those starting in the tile first, each part in
       // index order.
       tile.hinge_begin = m_tile_hinges.size();
       others.clear();
-      std::vector<Index> hinges;
+      hinges.clear();
       for(std::size_t k = tile.triangle_begin; k < tile.owned_triangle_end; ++k)
         for(Index h : triangle_hinges[m_tile_triangles[k]])
           if(h != none && hinge_stamp[h] != t)
@@ -293,15 +279,6 @@ private:
       m_tile_hinges.insert(m_tile_hinges.end(), others.begin(), others.end());
       tile.triangle_end = m_tile_triangles.size();
       tile.hinge_end = m_tile_hinges.size();
-      for(std::size_t k = tile.hinge_begin; k < tile.hinge_end; ++k)
-        hinge_slot[m_tile_hinges[k].hinge] = static_cast<Index>(k - tile.hinge_begin);
-      for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
-      {
-        for(Index c = vertex_corner_begin[i]; c < vertex_corner_begin[i + 1]; ++c)
-          m_corners[c] = 3 * triangle_slot[vertex_corners[c] / 3] + vertex_corners[c] % 3;
-        for(Index c = vertex_hinge_begin[i]; c < vertex_hinge_begin[i + 1]; ++c)
-          m_endpoints[c] = 2 * hinge_slot[vertex_hinges[c] / 2] + vertex_hinges[c] % 2;
-      }
       largest_triangles = (std::max)(largest_triangles, tile.triangle_end - tile.triangle_begin);
       largest_hinges = (std::max)(largest_hinges, tile.hinge_end - tile.hinge_begin);
       m_tiles.push_back(tile);
@@ -313,7 +290,7 @@ private:
       scratch.frame.resize(largest_triangles);
       scratch.coefficient.resize(largest_triangles);
       scratch.hinge_weight.resize(largest_triangles);
-      scratch.edge_factor.resize(largest_hinges);
+      scratch.edge_term.resize(largest_hinges);
     }
   }
 
@@ -376,42 +353,71 @@ private:
       scratch.coefficient[local.f[1]] -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
       scratch.hinge_weight[local.f[0]] += 0.5 * kC;
       scratch.hinge_weight[local.f[1]] += 0.5 * kC;
-      scratch.edge_factor[j] = 3 * C / S;
+      scratch.edge_term[j] = (3 * C / S) * e;
     }
     if(!gradient)
       return energy;
 
-    const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
-    for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
+    // Each vertex of the tile sums its terms in an order that does not depend on the tiles:
+    // its corners in triangle order, then its hinges' edge terms in hinge order. Each
+    // triangle's edges are computed once, for its corners in the tile.
+    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
+    for(std::size_t i = first; i < tile.vertex_end; ++i)
     {
-      Eigen::Vector3d g = Eigen::Vector3d::Zero();
-      double k_normal = 0, height2 = std::numeric_limits<double>::infinity();
-      for(Index c = m_corner_begin[i]; c < m_corner_begin[i + 1]; ++c)
-      {
-        const Index k = m_corners[c] / 3, corner = m_corners[c] % 3;
-        const auto& v = m_mesh.triangles[triangles[k]];
-        const Eigen::Vector3d opposite = point(P, v[(corner + 2) % 3]) - point(P, v[(corner + 1) % 3]);
-        g += scratch.coefficient[k].cross(opposite);
-        const double l2 = scratch.frame[k].l * scratch.frame[k].l, o2 = opposite.squaredNorm();
-        k_normal += scratch.hinge_weight[k] * o2 / l2;
-        if(o2 > 0)
-          height2 = (std::min)(height2, l2 / o2);
-      }
-      for(Index c = m_endpoint_begin[i]; c < m_endpoint_begin[i + 1]; ++c)
-      {
-        const Index j = m_endpoints[c] / 2;
-        const auto& v = m_mesh.hinges[m_tile_hinges[tile.hinge_begin + j].hinge].v;
-        const Eigen::Vector3d e = point(P, v[1]) - point(P, v[0]);
-        if(m_endpoints[c] % 2 == 0)
-          g -= scratch.edge_factor[j] * e;
-        else
-          g += scratch.edge_factor[j] * e;
-      }
-      point(*G, i) = scale == 1 ? g : Eigen::Vector3d(scale * g);
+      point(*G, i).setZero();
       if(scales)
       {
-        scales->stiffness[static_cast<Eigen::Index>(i)] = scale * scale * k_normal;
-        scales->reach[static_cast<Eigen::Index>(i)] = std::sqrt(height2) / scale;
+        scales->stiffness[static_cast<Eigen::Index>(i)] = 0;
+        scales->reach[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
+      }
+    }
+    for(std::size_t k = 0; k < tile.owned_triangle_end - tile.triangle_begin; ++k)
+    {
+      const auto& v = m_mesh.triangles[triangles[k]];
+      const std::array<Eigen::Vector3d, 3> p{point(P, v[0]), point(P, v[1]), point(P, v[2])};
+      const double l2 = scratch.frame[k].l * scratch.frame[k].l;
+      for(std::size_t corner = 0; corner < 3; ++corner)
+      {
+        if(v[corner] - first >= size)
+          continue;
+        const Eigen::Vector3d opposite = p[(corner + 2) % 3] - p[(corner + 1) % 3];
+        point(*G, v[corner]) += scratch.coefficient[k].cross(opposite);
+        if(scales)
+        {
+          // the stiffness and the squared reach, until scaled below
+          const auto row = static_cast<Eigen::Index>(v[corner]);
+          const double o2 = opposite.squaredNorm();
+          scales->stiffness[row] += scratch.hinge_weight[k] * o2 / l2;
+          if(o2 > 0)
+            scales->reach[row] = (std::min)(scales->reach[row], l2 / o2);
+        }
+      }
+    }
+    // The tile's own hinges and the others are each in hinge order: merged, they are in
+    // hinge order.
+    std::size_t j = 0, other = owned;
+    while(j < owned || other < hinges)
+    {
+      const std::size_t next = other == hinges || (j < owned && m_tile_hinges[tile.hinge_begin + j].hinge <
+                                                                   m_tile_hinges[tile.hinge_begin + other].hinge)
+                                 ? j++
+                                 : other++;
+      const auto& v = m_mesh.hinges[m_tile_hinges[tile.hinge_begin + next].hinge].v;
+      if(v[0] - first < size)
+        point(*G, v[0]) -= scratch.edge_term[next];
+      if(v[1] - first < size)
+        point(*G, v[1]) += scratch.edge_term[next];
+    }
+    const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
+    for(std::size_t i = first; i < tile.vertex_end; ++i)
+    {
+      if(scale != 1)
+        point(*G, i) = Eigen::Vector3d(scale * point(*G, i));
+      if(scales)
+      {
+        const auto row = static_cast<Eigen::Index>(i);
+        scales->stiffness[row] = scale * scale * scales->stiffness[row];
+        scales->reach[row] = std::sqrt(scales->reach[row]) / scale;
       }
     }
     return energy;
@@ -431,7 +437,6 @@ private:
   std::vector<Tile> m_tiles;
   std::vector<Index> m_tile_triangles;
   std::vector<Tile_hinge> m_tile_hinges;
-  std::vector<Index> m_corner_begin, m_corners, m_endpoint_begin, m_endpoints;
   Worker_pool m_workers;
   std::vector<Scratch> m_scratch; // one per worker
   // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and the
