@@ -65,6 +65,18 @@ void add_scaled(Points& y, double s, const X& x)
   });
 }
 
+// y += s x, then <z, y>, block by block: the block of y is read again while in cache. The same
+// results as add_scaled() then dot().
+template <typename X, typename Z>
+double add_scaled_then_dot(Points& y, double s, const X& x, const Z& z, std::vector<double>& partial)
+{
+  return parallel_sum(static_cast<std::size_t>(y.rows()), partial, [&](std::size_t begin, std::size_t end) {
+    const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+    y.middleRows(first, n) += s * x.middleRows(first, n).template cast<double>();
+    return z.middleRows(first, n).template cast<double>().cwiseProduct(y.middleRows(first, n).template cast<double>()).sum();
+  });
+}
+
 // Y = s X, in parallel (Y may be X).
 inline void scale_to(Points& Y, double s, const Points& X)
 {

@@ -188,23 +188,29 @@ private:
   }
 
   // D = H D in place by the two-loop recursion, H0 = gamma K^-1 with gamma = s.y / (y.K^-1 y)
-  // for the newest pair.
+  // for the newest pair. Each update of D is fused with the next loop's dot on D.
   void apply_inverse_hessian(Points& D)
   {
+    const auto pair = [&](std::size_t k) { return (m_newest + memory - k) % memory; }; // k-th newest
+    m_alpha[m_newest] = m_rho[m_newest] * dot(m_s[m_newest], D, m_partial);
     for(std::size_t k = 0; k < m_pairs; ++k) // newest to oldest
     {
-      const std::size_t j = (m_newest + memory - k) % memory;
-      m_alpha[j] = m_rho[j] * dot(m_s[j], D, m_partial);
-      add_scaled(D, -m_alpha[j], m_y[j]);
+      const std::size_t j = pair(k);
+      if(k + 1 < m_pairs)
+        m_alpha[pair(k + 1)] = m_rho[pair(k + 1)] * add_scaled_then_dot(D, -m_alpha[j], m_y[j], m_s[pair(k + 1)], m_partial);
+      else
+        add_scaled(D, -m_alpha[j], m_y[j]);
     }
     const double gamma = 1 / (m_rho[m_newest] * inverse_stiffness_norm2(m_scales, m_y[m_newest], m_partial));
-    precondition(D, D);
-    scale_to(D, gamma, D);
+    apply_inverse_stiffness(m_scales, D, D, gamma);
+    double beta = m_rho[pair(m_pairs - 1)] * dot(m_y[pair(m_pairs - 1)], D, m_partial);
     for(std::size_t k = m_pairs; k-- > 0;) // oldest to newest
     {
-      const std::size_t j = (m_newest + memory - k) % memory;
-      const double beta = m_rho[j] * dot(m_y[j], D, m_partial);
-      add_scaled(D, m_alpha[j] - beta, m_s[j]);
+      const std::size_t j = pair(k);
+      if(k > 0)
+        beta = m_rho[pair(k - 1)] * add_scaled_then_dot(D, m_alpha[j] - beta, m_s[j], m_y[pair(k - 1)], m_partial);
+      else
+        add_scaled(D, m_alpha[j] - beta, m_s[j]);
     }
   }
 

@@ -23,10 +23,10 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// D = K^-1 R, vertex by vertex; R in double or single precision, and may be D itself. A vertex
-// with no stiffness is in no hinge: it stays.
+// D = gamma K^-1 R, vertex by vertex; R in double or single precision, and may be D itself. A
+// vertex with no stiffness is in no hinge: it stays.
 template <typename R>
-void apply_inverse_stiffness(const Vertex_scales& scales, const R& r, Points& D)
+void apply_inverse_stiffness(const Vertex_scales& scales, const R& r, Points& D, double gamma = 1)
 {
   D.resize(r.rows(), 3);
   parallel_for_blocks(static_cast<std::size_t>(r.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -35,6 +35,8 @@ void apply_inverse_stiffness(const Vertex_scales& scales, const R& r, Points& D)
       const auto row = static_cast<Eigen::Index>(i);
       const double k = scales.stiffness[row];
       D.row(row) = k > 0 ? Eigen::RowVector3d(r.row(row).template cast<double>() / k) : Eigen::RowVector3d::Zero();
+      if(gamma != 1)
+        point(D, i) = gamma * point(D, i);
     }
   });
 }
