@@ -50,10 +50,14 @@ public:
   // V restricted to the face: its components that would leave it are removed.
   void restrict(Points& V) const
   {
-    parallel_for_blocks(m_size, [&](std::size_t, std::size_t, std::size_t b) {
-      for(const auto& a : m_blocks[b])
-        Bound::restrict(a.second, point(V, a.first));
-    });
+    parallel_for_blocks(m_size, [&](std::size_t, std::size_t, std::size_t b) { restrict(V, b); });
+  }
+
+  // The same for the vertices of block b of Parallel_for.h only.
+  void restrict(Points& V, std::size_t b) const
+  {
+    for(const auto& a : m_blocks[b])
+      Bound::restrict(a.second, point(V, a.first));
   }
 
   std::size_t size() const

@@ -81,9 +81,15 @@ public:
   void project(Points& X) const
   {
     parallel_for_blocks(static_cast<std::size_t>(X.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t i = begin; i < end; ++i)
-        static_cast<const Bound&>(*this).project(X, i);
+      project_range(X, begin, end);
     });
+  }
+
+  // The same for the vertices [begin, end) of X only.
+  void project_range(Points& X, std::size_t begin, std::size_t end) const
+  {
+    for(std::size_t i = begin; i < end; ++i)
+      static_cast<const Bound&>(*this).project(X, i);
   }
 
   // The first vertex of X outside its set, or X.rows() if none.

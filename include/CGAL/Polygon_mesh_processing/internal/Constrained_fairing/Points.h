@@ -87,22 +87,6 @@ inline void scale_to(Points& Y, double s, const Points& X)
   });
 }
 
-// Y = X + t V, in parallel; false if a coordinate of Y is not finite.
-inline bool step_to(Points& Y, const Points& X, double t, const Points& V, std::vector<double>& partial)
-{
-  Y.resize(X.rows(), 3);
-  const double finite = parallel_sum(static_cast<std::size_t>(X.rows()), partial, [&](std::size_t begin, std::size_t end) {
-    bool all = true;
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      point(Y, i) = point(X, i) + t * point(V, i);
-      all = all && point(Y, i).allFinite();
-    }
-    return all ? 1. : 0.;
-  });
-  return finite == double(partial.size());
-}
-
 // <G, Y - X>
 inline double dot_with_difference(const Points& G, const Points& Y, const Points& X, std::vector<double>& partial)
 {

@@ -32,6 +32,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Projected_line_search.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
@@ -86,22 +87,16 @@ public:
       double slope = 0;
       if(m_pairs > 0)
       {
-        scale_to(m_D, -1, m_G);
-        m_active.restrict(m_D);
-        apply_inverse_hessian(m_D);
-        m_active.restrict(m_D);
-        limit_to_reach(m_D);
-        slope = dot(m_D, m_G, m_partial);
+        apply_inverse_hessian(m_D, restricted_negative_gradient(&m_s[m_newest]));
+        slope = finish_direction(true);
       }
       if(m_pairs == 0 || !(slope < 0))
       {
         m_pairs = 0;
-        scale_to(m_D, -1, m_G);
-        m_active.restrict(m_D);
+        restricted_negative_gradient(nullptr);
         precondition(m_D, m_D);
         scale_to(m_D, t_gradient, m_D);
-        limit_to_reach(m_D);
-        slope = dot(m_D, m_G, m_partial);
+        slope = finish_direction(false);
       }
 
       const auto sufficient = [&](double e, const Points& Y) {
@@ -134,19 +129,40 @@ public:
   }
 
 private:
-  // Shortens the displacement of each vertex to at most half its reach: then no step can flip
-  // or collapse a triangle. Without this, the energy's pull towards slivers (see the user
-  // manual) makes the quasi-Newton step overshoot on a few vertices at nearly every iteration,
-  // and that one vertex gets the whole step rejected.
-  void limit_to_reach(Points& D) const
+  // D = -G restricted to the active face; with `s`, also returns <s, D> (the two-loop's first
+  // dot), in the same pass.
+  double restricted_negative_gradient(const Float_points* s)
   {
-    parallel_for_blocks(static_cast<std::size_t>(D.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+    m_D.resize(m_G.rows(), 3);
+    return parallel_sum(static_cast<std::size_t>(m_G.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        point(m_D, i) = -1. * point(m_G, i);
+      m_active.restrict(m_D, begin / parallel_block_size);
+      if(!s)
+        return 0.;
+      const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+      return s->middleRows(first, n).template cast<double>().cwiseProduct(m_D.middleRows(first, n).template cast<double>()).sum();
+    });
+  }
+
+  // Restricts D to the active face if `restricted`, shortens the displacement of each vertex to at
+  // most half its reach, and returns the slope <D, G>, in one pass. Why the reach: then no step
+  // can flip or collapse a triangle. Without this, the energy's pull towards slivers (see the
+  // user manual) makes the quasi-Newton step overshoot on a few vertices at nearly every
+  // iteration, and that one vertex gets the whole step rejected.
+  double finish_direction(bool restricted)
+  {
+    return parallel_sum(static_cast<std::size_t>(m_D.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
+      if(restricted)
+        m_active.restrict(m_D, begin / parallel_block_size);
       for(std::size_t i = begin; i < end; ++i)
       {
-        const double length = point(D, i).norm(), limit = reach_fraction * m_scales.reach[static_cast<Eigen::Index>(i)];
+        const double length = point(m_D, i).norm(), limit = reach_fraction * m_scales.reach[static_cast<Eigen::Index>(i)];
         if(length > limit)
-          point(D, i) *= limit / length;
+          point(m_D, i) *= limit / length;
       }
+      const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+      return m_D.middleRows(first, n).template cast<double>().cwiseProduct(m_G.middleRows(first, n).template cast<double>()).sum();
     });
   }
 
@@ -188,11 +204,12 @@ private:
   }
 
   // D = H D in place by the two-loop recursion, H0 = gamma K^-1 with gamma = s.y / (y.K^-1 y)
-  // for the newest pair. Each update of D is fused with the next loop's dot on D.
-  void apply_inverse_hessian(Points& D)
+  // for the newest pair; `sD` is <s, D> for the newest pair's s. Each update of D is fused
+  // with the next loop's dot on D.
+  void apply_inverse_hessian(Points& D, double sD)
   {
     const auto pair = [&](std::size_t k) { return (m_newest + memory - k) % memory; }; // k-th newest
-    m_alpha[m_newest] = m_rho[m_newest] * dot(m_s[m_newest], D, m_partial);
+    m_alpha[m_newest] = m_rho[m_newest] * sD;
     for(std::size_t k = 0; k < m_pairs; ++k) // newest to oldest
     {
       const std::size_t j = pair(k);

@@ -16,6 +16,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <cstddef>
@@ -86,9 +87,8 @@ public:
     double t = t0;
     for(int k = 0; k < max_halvings; ++k)
     {
-      if(step_to(accepted.point, x, t, v, m_partial))
+      if(projected_step_to(accepted.point, x, t, v, bound))
       {
-        bound.project(accepted.point);
         ++m_evaluations;
         const double e = energy.value_and_gradient(accepted.point, G, &scales);
         if(holds(e, accepted.point))
@@ -115,12 +115,32 @@ private:
   bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Fairing_objective& energy,
                 const Condition& holds)
   {
-    if(!step_to(m_trial, x, t, v, m_partial)) // a step so long that it overflows is no candidate
+    if(!projected_step_to(m_trial, x, t, v, bound)) // a step so long that it overflows is no candidate
       return false;
-    bound.project(m_trial);
     ++m_evaluations;
     m_trial_energy = energy.value(m_trial);
     return holds(m_trial_energy, m_trial);
+  }
+
+  // y = P(x + t v) in one pass, each block projected as soon as it is computed; false if a
+  // coordinate of x + t v is not finite.
+  template <typename Bound>
+  bool projected_step_to(Points& y, const Points& x, double t, const Points& v, const Bound& bound)
+  {
+    y.resize(x.rows(), 3);
+    const double finite = parallel_sum(static_cast<std::size_t>(x.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
+      bool all = true;
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        point(y, i) = point(x, i) + t * point(v, i);
+        all = all && point(y, i).allFinite();
+      }
+      if(!all)
+        return 0.;
+      bound.project_range(y, begin, end);
+      return 1.;
+    });
+    return finite == double(m_partial.size());
   }
 
   void accept(double t, Accepted& accepted)
