@@ -3,8 +3,8 @@
 //
 // The default solver, the projected quasi-Newton method: on a noisy plane within a bound that
 // contains the plane, the minimum (energy 0) is known and must be approached, with every
-// iterate in the bound and the energy never rising; and the result is bit-identical whatever
-// the number of threads.
+// iterate in the bound and the energy never rising; the result is bit-identical whatever the
+// number of threads; and the fused vector passes give the same bits as the separate ones.
 
 #include "test_support.h"
 
@@ -14,6 +14,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <random>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -95,8 +96,37 @@ void check_thread_count_independence()
 #endif
 }
 
+// add_scaled_then_dot() against add_scaled() then dot(), on vectors of several blocks and a
+// partial one, with values spread over orders of magnitude so that any change in the order of
+// the operations shows in the last bits.
+void check_fused_passes()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  const Eigen::Index n = static_cast<Eigen::Index>(3 * CF::parallel_block_size + 123);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1), exponent(-8, 8);
+  const auto value = [&] { return uniform(random) * std::pow(10., exponent(random)); };
+  CF::Points y(n, 3);
+  CF::Float_points x(n, 3), z(n, 3);
+  for(Eigen::Index i = 0; i < n; ++i)
+    for(Eigen::Index c = 0; c < 3; ++c)
+    {
+      y(i, c) = value();
+      x(i, c) = static_cast<float>(value());
+      z(i, c) = static_cast<float>(value());
+    }
+  std::vector<double> partial;
+  CF::Points separate = y;
+  CF::add_scaled(separate, -0.37, x);
+  const double separate_dot = CF::dot(z, separate, partial);
+  const double fused_dot = CF::add_scaled_then_dot(y, -0.37, x, z, partial);
+  CHECK(fused_dot == separate_dot);
+  CHECK(y == separate);
+}
+
 int main()
 {
+  check_fused_passes();
   check_known_minimum(Deviation_bound::BALL);
   check_known_minimum(Deviation_bound::BOX);
   check_thread_count_independence();
