@@ -45,24 +45,37 @@ using Float_points = Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor>;
 // <A, B> over all coordinates
 inline double dot(const Points& A, const Points& B) { return A.cwiseProduct(B).sum(); }
 
-// The same in parallel over blocks of vertices, in double, `partial` the caller's buffer.
+// <A, B> over the rows [begin, end), in double. Every blockwise dot goes through this one
+// expression, so that a pass fused with other work gives the same bits as dot().
+template <typename A, typename B>
+double dot_rows(const A& a, const B& b, std::size_t begin, std::size_t end)
+{
+  const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+  return a.middleRows(first, n).template cast<double>().cwiseProduct(b.middleRows(first, n).template cast<double>()).sum();
+}
+
+// y += s x over the rows [begin, end).
+template <typename X>
+void add_scaled_rows(Points& y, double s, const X& x, std::size_t begin, std::size_t end)
+{
+  const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
+  y.middleRows(first, n) += s * x.middleRows(first, n).template cast<double>();
+}
+
+// <A, B> in parallel over blocks of vertices, in double, `partial` the caller's buffer.
 template <typename A, typename B>
 double dot(const A& a, const B& b, std::vector<double>& partial)
 {
-  return parallel_sum(static_cast<std::size_t>(a.rows()), partial, [&](std::size_t begin, std::size_t end) {
-    const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
-    return a.middleRows(first, n).template cast<double>().cwiseProduct(b.middleRows(first, n).template cast<double>()).sum();
-  });
+  return parallel_sum(static_cast<std::size_t>(a.rows()), partial,
+                      [&](std::size_t begin, std::size_t end) { return dot_rows(a, b, begin, end); });
 }
 
 // y += s x in parallel over blocks of vertices.
 template <typename X>
 void add_scaled(Points& y, double s, const X& x)
 {
-  parallel_for_blocks(static_cast<std::size_t>(y.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-    const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
-    y.middleRows(first, n) += s * x.middleRows(first, n).template cast<double>();
-  });
+  parallel_for_blocks(static_cast<std::size_t>(y.rows()),
+                      [&](std::size_t begin, std::size_t end, std::size_t) { add_scaled_rows(y, s, x, begin, end); });
 }
 
 // y += s x, then <z, y>, block by block: the block of y is read again while in cache. The same
@@ -71,19 +84,8 @@ template <typename X, typename Z>
 double add_scaled_then_dot(Points& y, double s, const X& x, const Z& z, std::vector<double>& partial)
 {
   return parallel_sum(static_cast<std::size_t>(y.rows()), partial, [&](std::size_t begin, std::size_t end) {
-    const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
-    y.middleRows(first, n) += s * x.middleRows(first, n).template cast<double>();
-    return z.middleRows(first, n).template cast<double>().cwiseProduct(y.middleRows(first, n).template cast<double>()).sum();
-  });
-}
-
-// Y = s X, in parallel (Y may be X).
-inline void scale_to(Points& Y, double s, const Points& X)
-{
-  Y.resize(X.rows(), 3);
-  parallel_for_blocks(static_cast<std::size_t>(X.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-    for(std::size_t i = begin; i < end; ++i)
-      point(Y, i) = s * point(X, i);
+    add_scaled_rows(y, s, x, begin, end);
+    return dot_rows(z, y, begin, end);
   });
 }
 

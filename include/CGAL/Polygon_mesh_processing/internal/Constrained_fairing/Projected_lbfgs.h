@@ -94,8 +94,7 @@ public:
       {
         m_pairs = 0;
         restricted_negative_gradient(nullptr);
-        precondition(m_D, m_D);
-        scale_to(m_D, t_gradient, m_D);
+        apply_inverse_stiffness(m_scales, m_D, m_D, t_gradient);
         slope = finish_direction(false);
       }
 
@@ -136,12 +135,9 @@ private:
     m_D.resize(m_G.rows(), 3);
     return parallel_sum(static_cast<std::size_t>(m_G.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
       for(std::size_t i = begin; i < end; ++i)
-        point(m_D, i) = -1. * point(m_G, i);
+        point(m_D, i) = -point(m_G, i);
       m_active.restrict(m_D, begin / parallel_block_size);
-      if(!s)
-        return 0.;
-      const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
-      return s->middleRows(first, n).template cast<double>().cwiseProduct(m_D.middleRows(first, n).template cast<double>()).sum();
+      return s ? dot_rows(*s, m_D, begin, end) : 0.;
     });
   }
 
@@ -161,8 +157,7 @@ private:
         if(length > limit)
           point(m_D, i) *= limit / length;
       }
-      const auto n = static_cast<Eigen::Index>(end - begin), first = static_cast<Eigen::Index>(begin);
-      return m_D.middleRows(first, n).template cast<double>().cwiseProduct(m_G.middleRows(first, n).template cast<double>()).sum();
+      return dot_rows(m_D, m_G, begin, end);
     });
   }
 
