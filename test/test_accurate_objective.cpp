@@ -58,22 +58,19 @@ void check_gradient()
   CF::Fairing_objective plain(hinges, X0), objective(hinges, X0);
   objective.add_fidelity(1000, [t](std::size_t) { return t; }, anchor);
 
-  // The term by hand: mu / A * sum m_i |x_i - a_i|^2 / t^2, m_i a third of the input's areas
-  // around i.
-  double area = 0, sum = 0;
-  std::vector<double> lumped(num_vertices(m), 0.);
-  for(const auto& tri : hinges.triangles)
-  {
-    const double a = 0.5 * (CF::point(X0, tri[1]) - CF::point(X0, tri[0])).cross(CF::point(X0, tri[2]) - CF::point(X0, tri[0])).norm();
-    area += a;
-    for(auto v : tri)
-      lumped[v] += a / 3;
-  }
-  for(std::size_t i = 0; i < lumped.size(); ++i)
-    sum += lumped[i] * (CF::point(X, i) - CF::point(anchor, i)).squaredNorm() / (t * t);
-  const double by_hand = 1000 * sum / area;
+  // The term by hand: mu / n * sum |x_i - a_i|^2 / t^2 over the n vertices.
+  double sum = 0;
+  for(std::size_t i = 0; i < num_vertices(m); ++i)
+    sum += (CF::point(X, i) - CF::point(anchor, i)).squaredNorm() / (t * t);
+  const double by_hand = 1000 * sum / double(num_vertices(m));
   CHECK(std::abs(objective.value(X) - plain.value(X) - by_hand) <= 1e-12 * by_hand);
   CHECK(objective.value(anchor) == plain.value(anchor));
+  // A vertex of tolerance 0 does not move: it has no term and is not counted in n.
+  CF::Fairing_objective pinned(hinges, X0);
+  pinned.add_fidelity(1000, [t](std::size_t i) { return i == 0 ? 0. : t; }, anchor);
+  const double pinned_by_hand =
+    1000 * (sum - (CF::point(X, 0) - CF::point(anchor, 0)).squaredNorm() / (t * t)) / double(num_vertices(m) - 1);
+  CHECK(std::abs(pinned.value(X) - plain.value(X) - pinned_by_hand) <= 1e-12 * pinned_by_hand);
 
   CF::Points G;
   objective.value_and_gradient(X, G);

@@ -46,8 +46,8 @@ enum class Constrained_fairing_objective
   /// default. Detail smaller than the bound is flattened, so the result may lie farther from
   /// the true surface than the noise was.
   FAIREST,
-  /// The bending energy plus a fidelity term, `mu / A * sum_i m_i |p_i - a_i|^2 / t_i^2`
-  /// (`m_i` the input's lumped area at vertex `i`, `A` the total area, `t_i` its tolerance,
+  /// The bending energy plus a fidelity term, `mu / n * sum_i |p_i - a_i|^2 / t_i^2`
+  /// (over the `n` vertices that may move, `t_i` the tolerance of vertex `i`,
   /// `mu` the `fidelity_weight`), `a_i` the vertex's position after 16 steps of Taubin's
   /// smoothing of the input, each step followed by a move back into the bound: the smoothing
   /// keeps the detail larger than the noise, and the bending energy removes what it leaves.

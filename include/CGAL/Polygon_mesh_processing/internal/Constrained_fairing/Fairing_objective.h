@@ -4,15 +4,18 @@
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus, for the
 // accurate objective, a fidelity term that keeps the surface near an anchor a_i:
 //
-//   F = mu / A * sum_i m_i |x_i - a_i|^2 / t_i^2,
+//   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
 //
-// m_i the input's lumped area at vertex i (a third of its triangles' areas), A the total area
-// and t_i the vertex's tolerance. F is dimensionless like the bending energy, and is mu when
-// every vertex is its tolerance away from its anchor. Why: the bending energy is
+// over the n vertices of nonzero tolerance t_i. F is dimensionless like the bending energy,
+// and is mu when every vertex is its tolerance away from its anchor. Why: the bending energy is
 // scale-invariant and does not care where in its band the surface sits, so its minimum
 // flattens real detail up to the bound. The anchor is a low-pass estimate of the surface (the
 // caller's choice; see constrained_fairing.h), which keeps the detail larger than the noise,
-// while the bending energy removes what the low-pass filter leaves.
+// while the bending energy removes what the low-pass filter leaves. Every vertex counts
+// alike, as in the bending energy, whose terms are per hinge, and as in the noise of a scan,
+// which is per point: weighted by vertex areas, the term held the vertices of small triangles
+// too loosely, and their normals ended worse than those of a bounded Taubin smoothing (see
+// benchmark/fairing_accuracy).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
@@ -33,8 +36,7 @@ namespace Constrained_fairing {
 class Fairing_objective
 {
 public:
-  // X0: the input points, kept by reference.
-  Fairing_objective(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_X0(X0), m_bending(mesh, X0) {}
+  Fairing_objective(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_bending(mesh, X0) {}
 
   // Adds the fidelity term of weight mu towards `anchor` (kept by reference); `tolerance(i)`
   // is vertex i's tolerance (no term for a vertex of tolerance 0, which does not move).
@@ -43,20 +45,16 @@ public:
   {
     m_anchor = &anchor;
     const std::size_t n = m_mesh.number_of_vertices;
+    std::size_t moving = 0;
+    for(std::size_t i = 0; i < n; ++i)
+      if(tolerance(i) > 0)
+        ++moving;
     m_weight.assign(n, 0.);
-    double area = 0;
-    for(const auto& t : m_mesh.triangles)
-    {
-      const double a =
-        0.5 * (point(m_X0, t[1]) - point(m_X0, t[0])).cross(point(m_X0, t[2]) - point(m_X0, t[0])).norm();
-      area += a;
-      for(Index v : t)
-        m_weight[v] += a / 3;
-    }
     for(std::size_t i = 0; i < n; ++i)
     {
       const double t = tolerance(i);
-      m_weight[i] = t > 0 && area > 0 ? mu * m_weight[i] / (area * t * t) : 0;
+      if(t > 0)
+        m_weight[i] = mu / (double(moving) * t * t);
     }
   }
 
@@ -100,7 +98,6 @@ private:
   }
 
   const Hinge_mesh& m_mesh;
-  const Points& m_X0;
   const Points* m_anchor = nullptr;
   Bending_energy m_bending;
   std::vector<double> m_weight; // empty without the fidelity term
