@@ -9,7 +9,8 @@
 // DIR when they are there: see get_demo_meshes.sh) and each noise level d in {0.25, 0.5}: seeded
 // uniform-ball noise of radius d h (h the mean edge length), epsilon the noise radius. Measured
 // against the clean mesh (surface_quality.h): surface RMS, normal error, bending energy, min
-// angle, folded faces, time (median of N runs).
+// angle, folded faces (and how many of them are at the clean mesh's own creases sharper than 90
+// degrees), time (median of N runs).
 // The yardsticks, clamped Laplacian and clamped Taubin (bounded_smoothers.h), are run for each
 // iteration count of the list and judged at their best count over the whole set, for each
 // measure separately (the geometric mean over the set decides). Ours: the default call
@@ -105,6 +106,7 @@ int main(int argc, char* argv[])
     std::string name;
     std::size_t faces;
     double clean_energy, clean_min_angle, noise_ratio;
+    std::size_t clean_creased_faces;
     Row input;
     std::vector<Row> laplacian, taubin, ours;
   };
@@ -130,6 +132,7 @@ int main(int argc, char* argv[])
       c.clean_energy = bending_energy(clean);
       c.noise_ratio = PMP::estimate_noise_level(noisy) / eps;
       c.clean_min_angle = measure(clean, clean, surface, eps, 0).min_angle_deg;
+      c.clean_creased_faces = surface.creased_faces;
       c.input.q = measure(noisy, noisy, surface, eps, bending_energy(noisy));
       for(auto kind : {Bounded_smoother::LAPLACIAN, Bounded_smoother::TAUBIN})
       {
@@ -154,7 +157,8 @@ int main(int argc, char* argv[])
         c.ours.push_back({measure(m, noisy, surface, eps, bending_energy(m)), seconds});
       }
       std::cout << c.name << ": " << num_vertices(clean) << " vertices, eps " << eps << ", clean energy "
-                << c.clean_energy << ", min angle " << c.clean_min_angle
+                << c.clean_energy << ", min angle " << c.clean_min_angle << " deg, "
+                << c.clean_creased_faces << " faces at creases sharper than 90"
                 << " deg, input RMS " << c.input.q.surface_rms / eps << " eps, normal "
                 << c.input.q.normal_error_deg << " deg, noise estimate " << c.noise_ratio << " eps" << std::endl;
       cases.push_back(c);
@@ -189,7 +193,7 @@ int main(int argc, char* argv[])
 
   std::cout << std::left << std::setw(18) << "case" << std::setw(22) << "method" << std::right << std::setw(8) << "RMS"
             << std::setw(8) << "normal" << std::setw(8) << "x RMS" << std::setw(8) << "x norm" << std::setw(9)
-            << "energy" << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(8) << "s" << "\n";
+            << "energy" << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(8) << "crease" << std::setw(8) << "s" << "\n";
   std::vector<std::vector<double> > rms_ratios(modes.size()), normal_ratios(modes.size());
   std::vector<bool> holds(modes.size(), true);
   for(const Case& c : cases)
@@ -206,7 +210,7 @@ int main(int argc, char* argv[])
       else
         std::cout << std::setw(16) << "";
       std::cout << std::setw(9) << r.q.energy / c.clean_energy << std::setw(9) << r.q.min_angle_deg << std::setw(7)
-                << r.q.folds << std::setw(8) << std::setprecision(3) << r.seconds << std::defaultfloat << "\n";
+                << r.q.folds << std::setw(8) << r.q.folds_at_creases << std::setw(8) << std::setprecision(3) << r.seconds << std::defaultfloat << "\n";
     };
     print("input", c.input, false);
     print("clamped Laplacian", c.laplacian[lap_rms], false);

@@ -5,7 +5,8 @@
 // the bound as they check it, in double; the RMS distance of the vertices to the clean
 // *surface* (sliding along the surface is harmless); the mean angle between corresponding face
 // normals; the smallest triangle angle; and the folds, faces whose normal is more than 90
-// degrees from the clean one.
+// degrees from the clean one, with those of them at the clean mesh's own creases (a face with
+// a neighbour more than 90 degrees away), where no smooth surface keeps the clean normals.
 
 #ifndef CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H
 #define CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 namespace benchmark {
 
@@ -41,7 +43,7 @@ struct Quality
   double max_coordinate = 0; // largest per-coordinate offset
   bool ball_holds = true, box_holds = true;
   double energy = 0, surface_rms = 0, normal_error_deg = 0, min_angle_deg = 180;
-  std::size_t folds = 0;
+  std::size_t folds = 0, folds_at_creases = 0;
 };
 
 inline double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
@@ -50,15 +52,30 @@ inline double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
   return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI;
 }
 
-// The clean mesh and its distance tree.
+// The clean mesh, its distance tree, and its faces at creases sharper than 90 degrees.
 struct Clean_surface
 {
   const Mesh& mesh;
   Tree tree;
+  std::vector<bool> at_crease; // by face index
+  std::size_t creased_faces = 0;
 
-  explicit Clean_surface(const Mesh& clean) : mesh(clean), tree(faces(clean).first, faces(clean).second, clean)
+  explicit Clean_surface(const Mesh& clean)
+      : mesh(clean), tree(faces(clean).first, faces(clean).second, clean), at_crease(num_faces(clean), false)
   {
     tree.accelerate_distance_queries();
+    for(auto f : faces(clean))
+    {
+      const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, clean);
+      for(auto h : halfedges_around_face(halfedge(f, clean), clean))
+      {
+        const auto g = face(opposite(h, clean), clean);
+        if(g != boost::graph_traits<Mesh>::null_face() &&
+           n * CGAL::Polygon_mesh_processing::compute_face_normal(g, clean) < 0)
+          at_crease[f.idx()] = true;
+      }
+      creased_faces += at_crease[f.idx()];
+    }
   }
 };
 
@@ -93,7 +110,10 @@ inline Quality measure(const Mesh& result, const Mesh& input, const Clean_surfac
     const auto n_clean = PMP::compute_face_normal(f, clean.mesh);
     normal_sum += angle_deg(n, n_clean);
     if(n * n_clean < 0)
+    {
       ++q.folds;
+      q.folds_at_creases += clean.at_crease[f.idx()];
+    }
     const auto h = halfedge(f, result);
     const Point a = result.point(source(h, result)), b = result.point(target(h, result)),
                 c = result.point(target(next(h, result), result));
