@@ -52,26 +52,27 @@ inline double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
   return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI;
 }
 
-// The clean mesh, its distance tree, and its faces at creases sharper than 90 degrees.
+// The clean mesh's distance tree, its face normals, and its faces at creases sharper than 90
+// degrees.
 struct Clean_surface
 {
-  const Mesh& mesh;
   Tree tree;
-  std::vector<bool> at_crease; // by face index
+  std::vector<K::Vector_3> normal; // by face index
+  std::vector<bool> at_crease;     // by face index
   std::size_t creased_faces = 0;
 
   explicit Clean_surface(const Mesh& clean)
-      : mesh(clean), tree(faces(clean).first, faces(clean).second, clean), at_crease(num_faces(clean), false)
+      : tree(faces(clean).first, faces(clean).second, clean), at_crease(num_faces(clean), false)
   {
     tree.accelerate_distance_queries();
     for(auto f : faces(clean))
+      normal.push_back(CGAL::Polygon_mesh_processing::compute_face_normal(f, clean));
+    for(auto f : faces(clean))
     {
-      const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, clean);
       for(auto h : halfedges_around_face(halfedge(f, clean), clean))
       {
         const auto g = face(opposite(h, clean), clean);
-        if(g != boost::graph_traits<Mesh>::null_face() &&
-           n * CGAL::Polygon_mesh_processing::compute_face_normal(g, clean) < 0)
+        if(g != boost::graph_traits<Mesh>::null_face() && normal[f.idx()] * normal[g.idx()] < 0)
           at_crease[f.idx()] = true;
       }
       creased_faces += at_crease[f.idx()];
@@ -107,7 +108,7 @@ inline Quality measure(const Mesh& result, const Mesh& input, const Clean_surfac
   for(auto f : faces(result))
   {
     const auto n = PMP::compute_face_normal(f, result);
-    const auto n_clean = PMP::compute_face_normal(f, clean.mesh);
+    const auto& n_clean = clean.normal[f.idx()];
     normal_sum += angle_deg(n, n_clean);
     if(n * n_clean < 0)
     {

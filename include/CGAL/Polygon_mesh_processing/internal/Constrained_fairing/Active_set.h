@@ -15,8 +15,13 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
+#include <CGAL/assertions.h>
+#include <CGAL/use.h>
+
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -50,13 +55,17 @@ public:
   // V restricted to the face: its components that would leave it are removed.
   void restrict(Points& V) const
   {
-    parallel_for_blocks(m_size, [&](std::size_t, std::size_t, std::size_t b) { restrict(V, b); });
+    parallel_for_blocks(m_size,
+                        [&](std::size_t begin, std::size_t end, std::size_t) { restrict_range(V, begin, end); });
   }
 
-  // The same for the vertices of block b of Parallel_for.h only.
-  void restrict(Points& V, std::size_t b) const
+  // The same for the vertices [begin, end) only, a block of Parallel_for.h.
+  void restrict_range(Points& V, std::size_t begin, std::size_t end) const
   {
-    for(const auto& a : m_blocks[b])
+    CGAL_precondition(begin % parallel_block_size == 0 &&
+                      end == (std::min)(begin + parallel_block_size, m_size));
+    CGAL_USE(end);
+    for(const auto& a : m_blocks[begin / parallel_block_size])
       Bound::restrict(a.second, point(V, a.first));
   }
 

@@ -136,7 +136,7 @@ private:
     return parallel_sum(static_cast<std::size_t>(m_G.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
       for(std::size_t i = begin; i < end; ++i)
         point(m_D, i) = -point(m_G, i);
-      m_active.restrict(m_D, begin / parallel_block_size);
+      m_active.restrict_range(m_D, begin, end);
       return s ? dot_rows(*s, m_D, begin, end) : 0.;
     });
   }
@@ -150,7 +150,7 @@ private:
   {
     return parallel_sum(static_cast<std::size_t>(m_D.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
       if(restricted)
-        m_active.restrict(m_D, begin / parallel_block_size);
+        m_active.restrict_range(m_D, begin, end);
       for(std::size_t i = begin; i < end; ++i)
       {
         const double length = point(m_D, i).norm(), limit = reach_fraction * m_scales.reach[static_cast<Eigen::Index>(i)];
