@@ -178,7 +178,7 @@ private:
   struct Frame
   {
     Eigen::Vector3d n;
-    double l;
+    double l, inverse_l;
   };
 
   // What a tile computes, per triangle and hinge of the tile.
@@ -322,7 +322,9 @@ private:
       const Eigen::Vector3d p0 = point(P, v[0]);
       const Eigen::Vector3d N = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0);
       const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
+      // N / l, not N times 1 / l: a flat hinge's normals are then equal to the last bit.
       scratch.frame[k].l = l;
+      scratch.frame[k].inverse_l = l > 0 ? 1 / l : 0;
       scratch.frame[k].n = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
       if(gradient)
       {
@@ -342,18 +344,18 @@ private:
       const Frame& F2 = scratch.frame[local.f[1]];
       const Eigen::Vector3d e = point(P, hinge.v[1]) - point(P, hinge.v[0]);
       const Eigen::Vector3d d = F1.n - F2.n;
-      const double L = e.squaredNorm(), S = F1.l + F2.l, C = 0.5 * d.squaredNorm();
-      const double kC = 1.5 * L / S; // dE/dC
+      const double L = e.squaredNorm(), inverse_S = 1 / (F1.l + F2.l), C = 0.5 * d.squaredNorm();
+      const double kC = 1.5 * L * inverse_S; // dE/dC
       if(j < owned)
         energy += kC * C;
       if(!gradient)
         continue;
-      const double kS = -kC * C / S; // dE/dS
-      scratch.coefficient[local.f[0]] += (kC / F1.l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
-      scratch.coefficient[local.f[1]] -= (kC / F2.l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+      const double kS = -kC * C * inverse_S; // dE/dS
+      scratch.coefficient[local.f[0]] += (kC * F1.inverse_l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
+      scratch.coefficient[local.f[1]] -= (kC * F2.inverse_l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
       scratch.hinge_weight[local.f[0]] += 0.5 * kC;
       scratch.hinge_weight[local.f[1]] += 0.5 * kC;
-      scratch.edge_term[j] = (3 * C / S) * e;
+      scratch.edge_term[j] = (3 * C * inverse_S) * e;
     }
     if(!gradient)
       return energy;
@@ -368,14 +370,14 @@ private:
       if(scales)
       {
         scales->stiffness[static_cast<Eigen::Index>(i)] = 0;
-        scales->reach[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
+        scales->reach[static_cast<Eigen::Index>(i)] = 0;
       }
     }
     for(std::size_t k = 0; k < tile.owned_triangle_end - tile.triangle_begin; ++k)
     {
       const auto& v = m_mesh.triangles[triangles[k]];
       const std::array<Eigen::Vector3d, 3> p{point(P, v[0]), point(P, v[1]), point(P, v[2])};
-      const double l2 = scratch.frame[k].l * scratch.frame[k].l;
+      const double inverse_l2 = scratch.frame[k].inverse_l * scratch.frame[k].inverse_l;
       for(std::size_t corner = 0; corner < 3; ++corner)
       {
         if(v[corner] - first >= size)
@@ -384,12 +386,11 @@ private:
         point(*G, v[corner]) += scratch.coefficient[k].cross(opposite);
         if(scales)
         {
-          // the stiffness and the squared reach, until scaled below
+          // the stiffness and the inverse squared reach, until scaled below
           const auto row = static_cast<Eigen::Index>(v[corner]);
-          const double o2 = opposite.squaredNorm();
-          scales->stiffness[row] += scratch.hinge_weight[k] * o2 / l2;
-          if(o2 > 0)
-            scales->reach[row] = (std::min)(scales->reach[row], l2 / o2);
+          const double o2 = opposite.squaredNorm() * inverse_l2;
+          scales->stiffness[row] += scratch.hinge_weight[k] * o2;
+          scales->reach[row] = (std::max)(scales->reach[row], o2);
         }
       }
     }
@@ -417,7 +418,8 @@ private:
       {
         const auto row = static_cast<Eigen::Index>(i);
         scales->stiffness[row] = scale * scale * scales->stiffness[row];
-        scales->reach[row] = std::sqrt(scales->reach[row]) / scale;
+        scales->reach[row] = scales->reach[row] > 0 ? 1 / (scale * std::sqrt(scales->reach[row]))
+                                                    : std::numeric_limits<double>::infinity();
       }
     }
     return energy;

@@ -31,12 +31,15 @@ namespace internal {
 namespace Constrained_fairing {
 
 // |q - c| <= eps as a user computes it: the squared distance against eps^2, and its square
-// root against eps (both, since rounding may separate them).
+// root against eps (both, since rounding may separate them). Below 0.98 eps^2, where eps^2 is
+// a normal number, the square root is within eps whatever the rounding: it is not taken.
 inline bool is_in_ball(const double* q, const double* c, double eps)
 {
   const double dx = q[0] - c[0], dy = q[1] - c[1], dz = q[2] - c[2];
-  const double d2 = dx * dx + dy * dy + dz * dz;
-  return d2 <= eps * eps && std::sqrt(d2) <= eps;
+  const double d2 = dx * dx + dy * dy + dz * dz, eps2 = eps * eps;
+  if(d2 <= 0.98 * eps2 && eps2 >= (std::numeric_limits<double>::min)())
+    return true;
+  return d2 <= eps2 && std::sqrt(d2) <= eps;
 }
 
 // |d|, without underflow to 0 or overflow to infinity where |d| itself is in range (the
