@@ -4,7 +4,8 @@
 // The default solver, the projected quasi-Newton method: on a noisy plane within a bound that
 // contains the plane, the minimum (energy 0) is known and must be approached, with every
 // iterate in the bound and the energy never rising; the result is bit-identical whatever the
-// number of threads; and the fused vector passes give the same bits as the separate ones.
+// number of threads; no step flips or collapses a triangle; and the fused vector passes give
+// the same bits as the separate ones.
 
 #include "test_support.h"
 
@@ -96,6 +97,44 @@ void check_thread_count_independence()
 #endif
 }
 
+// No step flips or collapses a triangle. Each vertex moves at most a tenth of its smallest
+// height in its triangles (its reach), so a triangle's area vector N changes by at most 0.3 |N|
+// to first order (moving vertex v by d adds d x e, e the opposite edge, and |e| h_v = |N|) and
+// 0.03 |N| to second order (|d_u x d_v| <= h_u h_v / 100 <= |N| / 100). Checked between
+// consecutive iterates of a run on a sphere with noise of half its edge length, from the
+// input itself (no smoothed start), where triangles are small and the steps long.
+void check_no_step_flips_a_triangle()
+{
+  Mesh m = test::icosphere(4);
+  const double h = test::mean_edge_length(m);
+  test::add_noise(m, 0.5 * h, 23);
+  std::vector<std::vector<Point> > iterates;
+  for(std::size_t k = 1; k <= 30; ++k)
+  {
+    Mesh run = m;
+    const auto r = PMP::constrained_fairing(
+      run, 0.5 * h,
+      CFP::initial_smoothing_steps(0, CFP::energy_decrease_threshold(0., CGAL::parameters::number_of_iterations(k))));
+    CHECK(r && r.number_of_iterations == k);
+    iterates.push_back(test::points(run));
+  }
+  double worst = 0; // the largest |N' - N| / |N|
+  for(std::size_t k = 1; k < iterates.size(); ++k)
+    for(auto f : faces(m))
+    {
+      const auto area_vector = [&](const std::vector<Point>& p) {
+        const auto g = halfedge(f, m);
+        const Point &a = p[source(g, m)], &b = p[target(g, m)], &c = p[target(next(g, m), m)];
+        return CGAL::cross_product(b - a, c - a);
+      };
+      const test::Vector before = area_vector(iterates[k - 1]), after = area_vector(iterates[k]);
+      worst = (std::max)(worst, std::sqrt((after - before).squared_length() / before.squared_length()));
+    }
+  CHECK(worst <= 0.34);
+  std::cout << "  29 steps on a noisy sphere: a triangle's area vector changed by at most " << worst
+            << " of itself in one step" << std::endl;
+}
+
 // add_scaled_then_dot() against add_scaled() then dot(), on vectors of several blocks and a
 // partial one, with values spread over orders of magnitude so that any change in the order of
 // the operations shows in the last bits.
@@ -130,5 +169,6 @@ int main()
   check_known_minimum(Deviation_bound::BALL);
   check_known_minimum(Deviation_bound::BOX);
   check_thread_count_independence();
+  check_no_step_flips_a_triangle();
   return test::report("test_projected_lbfgs");
 }
