@@ -193,7 +193,8 @@ int main(int argc, char* argv[])
 
   std::cout << std::left << std::setw(18) << "case" << std::setw(22) << "method" << std::right << std::setw(8) << "RMS"
             << std::setw(8) << "normal" << std::setw(8) << "x RMS" << std::setw(8) << "x norm" << std::setw(9)
-            << "energy" << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(8) << "crease" << std::setw(8) << "s" << "\n";
+            << "energy" << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(8) << "crease"
+            << std::setw(8) << "s" << "\n";
   std::vector<std::vector<double> > rms_ratios(modes.size()), normal_ratios(modes.size());
   std::vector<bool> holds(modes.size(), true);
   for(const Case& c : cases)
@@ -210,7 +211,8 @@ int main(int argc, char* argv[])
       else
         std::cout << std::setw(16) << "";
       std::cout << std::setw(9) << r.q.energy / c.clean_energy << std::setw(9) << r.q.min_angle_deg << std::setw(7)
-                << r.q.folds << std::setw(8) << r.q.folds_at_creases << std::setw(8) << std::setprecision(3) << r.seconds << std::defaultfloat << "\n";
+                << r.q.folds << std::setw(8) << r.q.folds_at_creases << std::setw(8) << std::setprecision(3)
+                << r.seconds << std::defaultfloat << "\n";
     };
     print("input", c.input, false);
     print("clamped Laplacian", c.laplacian[lap_rms], false);

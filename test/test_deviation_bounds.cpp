@@ -1,9 +1,9 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The bounds and the active set: projected points satisfy the bound exactly in double
-// arithmetic, as a user checks it, for coordinates and tolerances of very different
-// magnitudes; projection is the nearest point; the active set restricts a direction to the
+// The bounds and the active set: the ball's membership test is the user's check; projected
+// points satisfy the bound exactly in double arithmetic, as a user checks it, for coordinates
+// and tolerances of very different magnitudes; projection is the nearest point; the active set restricts a direction to the
 // face of the set a vertex is on, and with a gradient only where -g pushes outwards.
 
 #include "test_support.h"
@@ -166,8 +166,35 @@ void check_max_deviation()
   CHECK(CF::Box_bound(X0, 10).max_deviation(X) == 5);
 }
 
+// The ball's membership test, which skips the square root well inside the ball, against the
+// user's check, on points from 0.9 to 1.02 eps away, with eps from 1e-170 (where eps^2 is
+// subnormal or zero) to 1e100.
+void check_ball_membership()
+{
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> u(-1, 1), exponent(-170, 100), radius(0.9, 1.02);
+  std::size_t inside = 0, disagreements = 0;
+  for(int trial = 0; trial < 200000; ++trial)
+  {
+    const double eps = std::pow(10., exponent(rng));
+    const Point c(eps * u(rng), eps * u(rng), eps * u(rng));
+    test::Vector d(u(rng), u(rng), u(rng));
+    d = d / std::sqrt(d.squared_length());
+    const Point q = c + radius(rng) * eps * d;
+    const double qa[3] = {q.x(), q.y(), q.z()}, ca[3] = {c.x(), c.y(), c.z()};
+    const bool user = user_ball_check(q, c, eps);
+    inside += user;
+    disagreements += CF::is_in_ball(qa, ca, eps) != user;
+  }
+  CHECK(disagreements == 0);
+  CHECK(inside > 0 && inside < 200000);
+  std::cout << "  ball membership: " << inside << " of 200000 points inside, " << disagreements
+            << " disagreements with the user's check" << std::endl;
+}
+
 int main()
 {
+  check_ball_membership();
   check_projection<CF::Ball_bound>();
   check_projection<CF::Box_bound>();
   check_binding_constraints<CF::Ball_bound>();

@@ -322,9 +322,9 @@ private:
       const Eigen::Vector3d p0 = point(P, v[0]);
       const Eigen::Vector3d N = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0);
       const double l = std::sqrt(N.squaredNorm() + m_delta * m_delta);
-      // N / l, not N times 1 / l: a flat hinge's normals are then equal to the last bit.
       scratch.frame[k].l = l;
       scratch.frame[k].inverse_l = l > 0 ? 1 / l : 0;
+      // N / l, not N times 1 / l: a flat hinge's normals are then equal to the last bit.
       scratch.frame[k].n = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
       if(gradient)
       {

@@ -19,7 +19,8 @@
 //  2. the direction d = -H g restricted to that face, H the L-BFGS inverse Hessian of the last
 //     `memory` steps with H0 = gamma K^-1, K the vertices' stiffness and gamma fitted to the
 //     newest pair (d = -K^-1 g restricted when H gives no descent direction, or has no pairs);
-//  3. each vertex's move shortened to a tenth of its reach, so that no triangle flips or collapses;
+//  3. each vertex's move shortened to a tenth of its reach, so that no triangle flips or
+//     collapses;
 //  4. backtracking along P(x + t d) from t = 1 (d scaled by the last accepted step along
 //     -K^-1 g when H has no pairs) until E(y) < E(x) + lambda <g, y - x>
 //     (Projected_line_search).
@@ -148,10 +149,11 @@ private:
 
   // Restricts D to the active face if `restricted`, shortens the displacement of each vertex to at
   // most `reach_fraction` of its reach, and returns the slope <D, G>, in one pass. Why the reach:
-  // then no step can flip or collapse a triangle (see reach_fraction). Without this, the energy's pull towards slivers
-  // (see the user manual) makes the quasi-Newton step overshoot on a few vertices at nearly every
-  // iteration, and that one vertex gets the whole step rejected; a vertex whose triangles
-  // degenerate gets short moves, one with room long ones, as a trust region per vertex.
+  // then no step can flip or collapse a triangle (see reach_fraction), and the limit is a trust
+  // region per vertex, short where triangles degenerate and long where they have room. Without
+  // it, the energy's pull towards slivers (see the user manual) makes the quasi-Newton step
+  // overshoot on a few vertices at nearly every iteration, and that one vertex gets the whole
+  // step rejected.
   double finish_direction(bool restricted)
   {
     return parallel_sum(static_cast<std::size_t>(m_D.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
