@@ -187,7 +187,6 @@ private:
     std::vector<Frame> frame;
     std::vector<Eigen::Vector3d> coefficient; // the triangle's a
     std::vector<double> hinge_weight;         // the triangle's sum of w_h^2
-    std::vector<Eigen::Vector3d> edge_term;   // the hinge's 2 dE/dL times its edge
   };
 
   // The tiles: the triangles and hinges each needs.
@@ -224,7 +223,7 @@ private:
     // Each tile's triangles, numbered in the tile by `slot` (valid where `stamp` is the tile's
     // number), and hinges.
     std::vector<Index> triangle_stamp(nt, none), triangle_slot(nt), hinge_stamp(m_mesh.hinges.size(), none);
-    std::size_t largest_triangles = 0, largest_hinges = 0;
+    std::size_t largest_triangles = 0;
     std::vector<Tile_hinge> others;
     std::vector<Index> owned, hinges;
     for(std::size_t begin = 0; begin < n; begin += tile_size)
@@ -241,8 +240,7 @@ private:
         triangle_slot[f] = static_cast<Index>(m_tile_triangles.size() - tile.triangle_begin);
         m_tile_triangles.push_back(f);
       };
-      // The triangles of its vertices in index order: each vertex then gets its corners' terms
-      // in the same order whatever the tiles.
+      // The triangles of its vertices, in index order (neighbours in memory).
       owned.clear();
       for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
         owned.insert(owned.end(), vertex_triangles.begin() + vertex_triangle_begin[i],
@@ -280,7 +278,6 @@ private:
       tile.triangle_end = m_tile_triangles.size();
       tile.hinge_end = m_tile_hinges.size();
       largest_triangles = (std::max)(largest_triangles, tile.triangle_end - tile.triangle_begin);
-      largest_hinges = (std::max)(largest_hinges, tile.hinge_end - tile.hinge_begin);
       m_tiles.push_back(tile);
     }
     m_partial.resize(m_tiles.size());
@@ -290,7 +287,6 @@ private:
       scratch.frame.resize(largest_triangles);
       scratch.coefficient.resize(largest_triangles);
       scratch.hinge_weight.resize(largest_triangles);
-      scratch.edge_term.resize(largest_hinges);
     }
   }
 
@@ -333,6 +329,19 @@ private:
       }
     }
 
+    // A vertex of the tile gets the terms of its hinges' edges, in the tile's hinge order, as
+    // they are computed.
+    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
+    if(gradient)
+      for(std::size_t i = first; i < tile.vertex_end; ++i)
+      {
+        point(*G, i).setZero();
+        if(scales)
+        {
+          scales->stiffness[static_cast<Eigen::Index>(i)] = 0;
+          scales->reach[static_cast<Eigen::Index>(i)] = 0;
+        }
+      }
     double energy = 0;
     const std::size_t owned = tile.owned_hinge_end - tile.hinge_begin;
     const std::size_t hinges = (gradient ? tile.hinge_end : tile.owned_hinge_end) - tile.hinge_begin;
@@ -355,24 +364,17 @@ private:
       scratch.coefficient[local.f[1]] -= (kC * F2.inverse_l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
       scratch.hinge_weight[local.f[0]] += 0.5 * kC;
       scratch.hinge_weight[local.f[1]] += 0.5 * kC;
-      scratch.edge_term[j] = (3 * C * inverse_S) * e;
+      const Eigen::Vector3d edge_term = (3 * C * inverse_S) * e; // 2 dE/dL times the edge
+      if(hinge.v[0] - first < size)
+        point(*G, hinge.v[0]) -= edge_term;
+      if(hinge.v[1] - first < size)
+        point(*G, hinge.v[1]) += edge_term;
     }
     if(!gradient)
       return energy;
 
-    // Each vertex of the tile sums its terms in an order that does not depend on the tiles:
-    // its corners in triangle order, then its hinges' edge terms in hinge order. Each
-    // triangle's edges are computed once, for its corners in the tile.
-    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
-    for(std::size_t i = first; i < tile.vertex_end; ++i)
-    {
-      point(*G, i).setZero();
-      if(scales)
-      {
-        scales->stiffness[static_cast<Eigen::Index>(i)] = 0;
-        scales->reach[static_cast<Eigen::Index>(i)] = 0;
-      }
-    }
+    // Then the corners' terms. Each triangle's edges are computed once, for its corners in
+    // the tile.
     for(std::size_t k = 0; k < tile.owned_triangle_end - tile.triangle_begin; ++k)
     {
       const auto& v = m_mesh.triangles[triangles[k]];
@@ -393,21 +395,6 @@ private:
           scales->reach[row] = (std::max)(scales->reach[row], o2);
         }
       }
-    }
-    // The tile's own hinges and the others are each in hinge order: merged, they are in
-    // hinge order.
-    std::size_t j = 0, other = owned;
-    while(j < owned || other < hinges)
-    {
-      const std::size_t next = other == hinges || (j < owned && m_tile_hinges[tile.hinge_begin + j].hinge <
-                                                                   m_tile_hinges[tile.hinge_begin + other].hinge)
-                                 ? j++
-                                 : other++;
-      const auto& v = m_mesh.hinges[m_tile_hinges[tile.hinge_begin + next].hinge].v;
-      if(v[0] - first < size)
-        point(*G, v[0]) -= scratch.edge_term[next];
-      if(v[1] - first < size)
-        point(*G, v[1]) += scratch.edge_term[next];
     }
     const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
     for(std::size_t i = first; i < tile.vertex_end; ++i)
