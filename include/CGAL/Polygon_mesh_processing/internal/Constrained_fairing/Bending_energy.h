@@ -177,19 +177,21 @@ private:
     std::size_t hinge_begin, owned_hinge_end, hinge_end;
   };
 
-  // A triangle's regularized doubled area l and unit normal n.
+  // A triangle's regularized doubled area l and unit normal n, and for the gradient what its
+  // hinges add to it: in one record, so that a hinge reads and writes one place per triangle
+  // (with three arrays, the evaluation took 8 % longer at a million triangles).
   struct Frame
   {
     Eigen::Vector3d n;
     double l, inverse_l;
+    Eigen::Vector3d coefficient; // the triangle's a
+    double hinge_weight;         // the triangle's sum of w_h^2
   };
 
-  // What a tile computes, per triangle and hinge of the tile.
+  // What a tile computes, per triangle of the tile.
   struct Scratch
   {
     std::vector<Frame> frame;
-    std::vector<Eigen::Vector3d> coefficient; // the triangle's a
-    std::vector<double> hinge_weight;         // the triangle's sum of w_h^2
   };
 
   // The tiles: the triangles and hinges each needs.
@@ -288,11 +290,7 @@ private:
     m_partial.resize(m_tiles.size());
     m_scratch.resize(m_workers.size());
     for(Scratch& scratch : m_scratch)
-    {
       scratch.frame.resize(largest_triangles);
-      scratch.coefficient.resize(largest_triangles);
-      scratch.hinge_weight.resize(largest_triangles);
-    }
   }
 
   // The scaled points s X (X itself when the scale is 1).
@@ -329,8 +327,8 @@ private:
       scratch.frame[k].n = l > 0 ? Eigen::Vector3d(N / l) : Eigen::Vector3d::Zero();
       if(gradient)
       {
-        scratch.coefficient[k].setZero();
-        scratch.hinge_weight[k] = 0;
+        scratch.frame[k].coefficient.setZero();
+        scratch.frame[k].hinge_weight = 0;
       }
     }
 
@@ -353,8 +351,8 @@ private:
     for(std::size_t j = 0; j < hinges; ++j)
     {
       const Tile_hinge& hinge = m_tile_hinges[tile.hinge_begin + j];
-      const Frame& F1 = scratch.frame[hinge.f[0]];
-      const Frame& F2 = scratch.frame[hinge.f[1]];
+      Frame& F1 = scratch.frame[hinge.f[0]];
+      Frame& F2 = scratch.frame[hinge.f[1]];
       const Eigen::Vector3d e = point(P, hinge.v[1]) - point(P, hinge.v[0]);
       const Eigen::Vector3d d = F1.n - F2.n;
       const double L = e.squaredNorm(), inverse_S = 1 / (F1.l + F2.l), C = 0.5 * d.squaredNorm();
@@ -364,10 +362,10 @@ private:
       if(!gradient)
         continue;
       const double kS = -kC * C * inverse_S; // dE/dS
-      scratch.coefficient[hinge.f[0]] += (kC * F1.inverse_l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
-      scratch.coefficient[hinge.f[1]] -= (kC * F2.inverse_l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
-      scratch.hinge_weight[hinge.f[0]] += 0.5 * kC;
-      scratch.hinge_weight[hinge.f[1]] += 0.5 * kC;
+      F1.coefficient += (kC * F1.inverse_l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
+      F2.coefficient -= (kC * F2.inverse_l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+      F1.hinge_weight += 0.5 * kC;
+      F2.hinge_weight += 0.5 * kC;
       const Eigen::Vector3d edge_term = (3 * C * inverse_S) * e; // 2 dE/dL times the edge
       if(hinge.v[0] - first < size)
         point(*G, hinge.v[0]) -= edge_term;
@@ -389,13 +387,13 @@ private:
         if(v[corner] - first >= size)
           continue;
         const Eigen::Vector3d opposite = p[(corner + 2) % 3] - p[(corner + 1) % 3];
-        point(*G, v[corner]) += scratch.coefficient[k].cross(opposite);
+        point(*G, v[corner]) += scratch.frame[k].coefficient.cross(opposite);
         if(scales)
         {
           // the stiffness and the inverse squared reach, until scaled below
           const auto row = static_cast<Eigen::Index>(v[corner]);
           const double o2 = opposite.squaredNorm() * inverse_l2;
-          scales->stiffness[row] += scratch.hinge_weight[k] * o2;
+          scales->stiffness[row] += scratch.frame[k].hinge_weight * o2;
           scales->reach[row] = (std::max)(scales->reach[row], o2);
         }
       }
