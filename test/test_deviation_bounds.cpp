@@ -3,8 +3,9 @@
 //
 // The bounds and the active set: the ball's membership test is the user's check; projected
 // points satisfy the bound exactly in double arithmetic, as a user checks it, for coordinates
-// and tolerances of very different magnitudes; projection is the nearest point; the active set restricts a direction to the
-// face of the set a vertex is on, and with a gradient only where -g pushes outwards.
+// and tolerances of very different magnitudes; projection is the nearest point; the active set
+// restricts a direction to the face of the set a vertex is on, and with a gradient only where
+// -g pushes outwards.
 
 #include "test_support.h"
 

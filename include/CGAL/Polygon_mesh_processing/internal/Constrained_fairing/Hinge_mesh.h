@@ -123,7 +123,10 @@ private:
     for(const T& x : items)
       sorted[end[vertex(x)]++] = x;
     for(std::size_t v = 0; v < n; ++v)
-      std::sort(sorted.begin() + std::ptrdiff_t(v == 0 ? 0 : end[v - 1]), sorted.begin() + std::ptrdiff_t(end[v]), less);
+    {
+      const auto first = sorted.begin() + std::ptrdiff_t(v == 0 ? 0 : end[v - 1]);
+      std::sort(first, sorted.begin() + std::ptrdiff_t(end[v]), less);
+    }
     items.swap(sorted);
   }
 };
