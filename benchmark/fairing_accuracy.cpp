@@ -3,7 +3,7 @@
 //
 // How close to the true surface the fairing ends, against the naive bounded smoothers:
 //
-//   fairing_accuracy [--demo DIR] [--runs N] [--counts N,...]
+//   fairing_accuracy [--demo DIR] [--runs N] [--counts N,...] [--fidelity-weight W]
 //
 // For each mesh of the set (the bundled elephant, head and bunny, and CGAL demo meshes from
 // DIR when they are there: see get_demo_meshes.sh) and each noise level d in {0.25, 0.5}: seeded
@@ -82,6 +82,8 @@ int main(int argc, char* argv[])
 {
   const Arguments arguments(argc, argv);
   const std::string demo = arguments.option("demo", CONSTRAINED_FAIRING_DEMO_DATA);
+  // the accurate objective's fidelity weight; the library's default when not given
+  const double fidelity_weight = std::stod(arguments.option("fidelity-weight", "0"));
   const std::vector<Mode> modes = {{PMP::Constrained_fairing_objective::FAIREST},
                                    {PMP::Constrained_fairing_objective::ACCURATE}};
   std::vector<int> counts;
@@ -152,7 +154,10 @@ int main(int argc, char* argv[])
         Mesh m;
         const double seconds = median_seconds(arguments.runs, [&] {
           m = noisy;
-          PMP::constrained_fairing(m, eps, CFP::fairing_objective(mode.objective));
+          if(fidelity_weight > 0)
+            PMP::constrained_fairing(m, eps, CFP::fairing_objective(mode.objective, CFP::fidelity_weight(fidelity_weight)));
+          else
+            PMP::constrained_fairing(m, eps, CFP::fairing_objective(mode.objective));
         });
         c.ours.push_back({measure(m, noisy, surface, eps, bending_energy(m)), seconds});
       }
