@@ -82,8 +82,9 @@ int main(int argc, char* argv[])
 {
   const Arguments arguments(argc, argv);
   const std::string demo = arguments.option("demo", CONSTRAINED_FAIRING_DEMO_DATA);
-  // the accurate objective's fidelity weight; the library's default when not given
-  const double fidelity_weight = std::stod(arguments.option("fidelity-weight", "0"));
+  // the accurate objective's fidelity weight (the fairest objective has none)
+  const double default_weight = PMP::internal::Constrained_fairing::default_fidelity_weight;
+  const double fidelity_weight = std::stod(arguments.option("fidelity-weight", std::to_string(default_weight)));
   const std::vector<Mode> modes = {{PMP::Constrained_fairing_objective::FAIREST},
                                    {PMP::Constrained_fairing_objective::ACCURATE}};
   std::vector<int> counts;
@@ -154,10 +155,8 @@ int main(int argc, char* argv[])
         Mesh m;
         const double seconds = median_seconds(arguments.runs, [&] {
           m = noisy;
-          if(fidelity_weight > 0)
-            PMP::constrained_fairing(m, eps, CFP::fairing_objective(mode.objective, CFP::fidelity_weight(fidelity_weight)));
-          else
-            PMP::constrained_fairing(m, eps, CFP::fairing_objective(mode.objective));
+          PMP::constrained_fairing(m, eps,
+                                   CFP::fairing_objective(mode.objective, CFP::fidelity_weight(fidelity_weight)));
         });
         c.ours.push_back({measure(m, noisy, surface, eps, bending_energy(m)), seconds});
       }

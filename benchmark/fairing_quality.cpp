@@ -7,12 +7,12 @@
 //
 // For the input, the default call (ball), the accurate objective, the paper's box, the paper's
 // Newton method (with CHOLMOD when available), and the default method stopped after 25 to 500
-// iterations (no stopping rule), it reports (surface_quality.h): the
-// bound as a user checks it, in double (Euclidean and per coordinate), the bending energy, the
-// RMS distance of the vertices to the clean *surface* (sliding along the surface is harmless),
-// the mean angle between corresponding face normals of result and clean mesh, the smallest
-// triangle angle, the number of faces whose normal is more than 90 degrees from the clean one
-// (folds), and the median time over N runs.
+// iterations (no stopping rule), it reports (surface_quality.h): the bound as a user checks it,
+// in double (Euclidean and per coordinate), the bending energy, the RMS distance of the vertices
+// to the clean *surface* (sliding along the surface is harmless), the mean angle between
+// corresponding face normals of result and clean mesh, the smallest triangle angle, the number
+// of faces whose normal is more than 90 degrees from the clean one (folds), and the median time
+// over N runs.
 // Then the protocol of the paper's Table 1, at EPS and at 8 EPS: the default (quasi-Newton)
 // call, and the paper's projected gradient and active set Newton methods (with 1, 3 and 10
 // conjugate gradient iterations per step) stopped at its energy (iterations and seconds).
