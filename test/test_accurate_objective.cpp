@@ -2,13 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The accurate objective (Constrained_fairing_objective::ACCURATE): the fidelity term's
-// gradient against finite differences, the user's bound exactly in double, the objective never
-// rising with every method, the result closer to the true surface than the fairest one on a
-// real mesh, and bad fidelity weights rejected with the mesh untouched.
+// gradient against finite differences, its anchor (Bilateral_normal_filter.h) denoising without
+// flattening or shrinking and within the bound, the user's bound exactly in double, the
+// objective never rising with every method, the result closer to the true surface than the
+// fairest one on a real mesh, and bad fidelity weights rejected with the mesh untouched.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bilateral_normal_filter.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -206,9 +209,61 @@ void check_bad_weights()
   CHECK(test::identical(test::points(m), test::points(fairest)));
 }
 
+// The anchor of a plane and of a sphere: a clean plane keeps every height exactly 0; noise
+// uniform in a ball of radius t falls to half or less along the normal; the sphere's radius
+// moves by less than a fifth of the noise radius; every vertex stays within t of its input,
+// exactly.
+void check_anchor()
+{
+  std::mt19937 rng(5);
+  const auto denoise = [&](const Mesh& clean, double t, CF::Points& X0, CF::Points& X) {
+    X0 = to_points(clean);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for(Eigen::Index i = 0; i < X0.rows(); ++i)
+    {
+      Eigen::Vector3d d;
+      do
+        d = Eigen::Vector3d(u(rng), u(rng), u(rng));
+      while(d.squaredNorm() > 1);
+      X0.row(i) += t * d.transpose();
+    }
+    X = X0;
+    const CF::Hinge_mesh hinges(clean, get(boost::vertex_index, clean));
+    CF::Bilateral_normal_filter(hinges).apply(CF::Ball_bound(X0, t), X);
+    for(Eigen::Index i = 0; i < X0.rows(); ++i)
+      CHECK((X.row(i) - X0.row(i)).squaredNorm() <= t * t);
+  };
+  CF::Points X0, X;
+  const Mesh plane = test::plane_patch(30);
+  const double h = test::mean_edge_length(plane);
+  denoise(plane, 0, X0, X);
+  CHECK(X.col(2).cwiseAbs().maxCoeff() == 0);
+  denoise(plane, 0.25 * h, X0, X);
+  std::cout << "plane, noise 0.25 h: RMS height " << std::sqrt(X0.col(2).squaredNorm() / double(X0.rows()))
+            << " -> " << std::sqrt(X.col(2).squaredNorm() / double(X.rows())) << std::endl;
+  CHECK(X.col(2).squaredNorm() * 4 <= X0.col(2).squaredNorm());
+
+  const Mesh sphere = test::icosphere(3);
+  const double hs = test::mean_edge_length(sphere);
+  denoise(sphere, 0.25 * hs, X0, X);
+  double radius = 0, error2 = 0, error2_input = 0;
+  for(Eigen::Index i = 0; i < X.rows(); ++i)
+  {
+    radius += X.row(i).norm();
+    error2 += CGAL::square(X.row(i).norm() - 1);
+    error2_input += CGAL::square(X0.row(i).norm() - 1);
+  }
+  radius /= double(X.rows());
+  std::cout << "sphere, noise 0.25 h: mean radius " << radius << ", RMS radial error " << std::sqrt(error2_input / double(X.rows()))
+            << " -> " << std::sqrt(error2 / double(X.rows())) << std::endl;
+  CHECK(std::abs(radius - 1) <= 0.05 * hs);
+  CHECK(error2 * 4 <= error2_input);
+}
+
 int main()
 {
   check_gradient();
+  check_anchor();
   check_elephant();
   check_fixed_and_box();
   check_bad_weights();

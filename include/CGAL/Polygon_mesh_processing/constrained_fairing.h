@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set_newton.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bilateral_normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fold_repair.h>
@@ -51,12 +52,10 @@ struct Always_continue
 using Default_sparse_linear_solver =
   CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
 
-// The accurate objective: the fidelity weight, and the projected Taubin steps that make its
-// anchor from the input (Smoothed_start.h). Chosen on the benchmark fairing_accuracy, over its
-// whole set of meshes and noise levels (the user manual gives the alternatives' figures); the
-// results change little across a tenfold range of weights and from 8 to 24 steps.
+// The accurate objective's fidelity weight, chosen on the benchmark fairing_accuracy over its
+// whole set of meshes and noise levels (the user manual gives the alternatives' figures). Its
+// anchor is made by Bilateral_normal_filter.h.
 constexpr double default_fidelity_weight = 1e4;
-constexpr std::size_t accurate_anchor_steps = 16;
 
 // The rounds of fold repair at most.
 constexpr std::size_t fold_repair_rounds = 3;
@@ -216,8 +215,6 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     get_parameter(np, conjugate_gradient_iterations), options.cg_iterations)));
   options.smoothing_steps =
     static_cast<std::size_t>(choose_parameter(get_parameter(np, initial_smoothing_steps), options.smoothing_steps));
-  const bool accurate = choose_parameter(get_parameter(np, fairing_objective), Constrained_fairing_objective::FAIREST) ==
-                        Constrained_fairing_objective::ACCURATE;
   const auto callback = choose_parameter(get_parameter(np, iteration_callback), Always_continue());
   const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
   CGAL_precondition(options.threshold >= 0);
@@ -254,6 +251,10 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     point(X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   });
   const double mu = choose_parameter(get_parameter(np, fidelity_weight), default_fidelity_weight);
+  // A fidelity term of weight 0 is none: the call is then that of the fairest objective.
+  const bool accurate = choose_parameter(get_parameter(np, fairing_objective), Constrained_fairing_objective::FAIREST) ==
+                          Constrained_fairing_objective::ACCURATE &&
+                        mu > 0;
   Vertex_bounds bounds;
   if(rejected(coordinates_error(X0, number)) || rejected(epsilon_error(epsilon)) ||
      rejected(fidelity_weight_error(mu)) || rejected(bounds.read(part, epsilon, np)))
@@ -299,7 +300,7 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
     if(accurate)
     {
       anchor = X0;
-      smooth_start(mesh, bound, accurate_anchor_steps, anchor);
+      Bilateral_normal_filter(mesh).apply(bound, anchor);
       energy.add_fidelity(mu, [&bounds](std::size_t i) { return bounds.largest_size(i); }, anchor);
     }
     result.initial_energy = result.final_energy = result.final_bending_energy = energy.value(X0);
@@ -311,8 +312,8 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
       // has a higher energy than the input.
       if(options.smoothing_steps > 0)
       {
-        if(accurate && options.smoothing_steps == accurate_anchor_steps)
-          X = anchor; // the same steps from the same input
+        if(accurate)
+          X = anchor;
         else
           smooth_start(mesh, bound, options.smoothing_steps, X);
         if(!(energy.value(X) < result.initial_energy))
@@ -597,7 +598,7 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
   \cgalParamNEnd
   \cgalParamNBegin{fairing_objective}
     \cgalParamDescription{what is minimized inside the bound: the bending energy alone, or with a
-                          fidelity term towards a smoothed input, which brings the result closer to
+                          fidelity term towards a denoised input, which brings the result closer to
                           the true surface of a noisy scan and keeps more of its detail (see the
                           user manual for the measurements)}
     \cgalParamType{`CGAL::Polygon_mesh_processing::Constrained_fairing_objective`}
@@ -606,9 +607,9 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
   \cgalParamNBegin{fidelity_weight}
     \cgalParamDescription{the weight `mu` of the fidelity term of
                           `Constrained_fairing_objective::ACCURATE` (ignored otherwise): the term is
-                          `mu` when every vertex is its tolerance away from its smoothed position;
-                          larger values keep the result nearer the smoothed input, smaller ones
-                          let it fairer}
+                          `mu` when every vertex is its tolerance away from its denoised position;
+                          larger values keep the result nearer the denoised input, smaller ones
+                          let it fairer; `0` is the fairest objective}
     \cgalParamType{double, finite and non-negative}
     \cgalParamDefault{`10000`}
   \cgalParamNEnd
@@ -631,7 +632,9 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDescription{the steps of Taubin's non-shrinking smoothing (each vertex moved
                           towards, then away from the mean of its neighbours, and back into its
                           bound) that make the starting point, kept if they lower the energy; `0`
-                          starts from the input. The energy is not convex: on terraced input
+                          starts from the input. With `Constrained_fairing_objective::ACCURATE`,
+                          any other value starts from the objective's denoised input instead.
+                          The energy is not convex: on terraced input
                           (surface nets on thick slices) descent from the input stalls in the
                           terraces, and on noisy scans the smoothed start also leads to lower
                           minima}
