@@ -100,13 +100,11 @@ private:
     parallel_for_blocks(nf, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t f = begin; f < end; ++f)
       {
-        const auto& t = m_mesh.triangles[f];
-        const Eigen::Vector3d a = point(X, t[0]), b = point(X, t[1]), c = point(X, t[2]);
-        const Eigen::Vector3d cross = (b - a).cross(c - a);
-        const double length = cross.norm();
+        const Eigen::Vector3d normal = area_normal(m_mesh, X, f);
+        const double length = normal.norm();
         m_area[f] = length / 2;
-        m_normal[f] = length > 0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
-        m_centroid[f] = (a + b + c) / 3;
+        m_normal[f] = length > 0 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();
+        m_centroid[f] = centroid(m_mesh, X, f);
       }
     });
   }
@@ -156,10 +154,7 @@ private:
     const std::size_t nf = m_mesh.triangles.size();
     parallel_for_blocks(nf, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t f = begin; f < end; ++f)
-      {
-        const auto& t = m_mesh.triangles[f];
-        m_centroid[f] = (point(X, t[0]) + point(X, t[1]) + point(X, t[2])) / 3;
-      }
+        m_centroid[f] = centroid(m_mesh, X, f);
     });
     parallel_for_blocks(m_mesh.number_of_vertices, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)

@@ -11,11 +11,11 @@
 // scale-invariant and does not care where in its band the surface sits, so its minimum
 // flattens real detail up to the bound. The anchor is a denoised copy of the input (the
 // caller's choice; constrained_fairing.h makes it with Bilateral_normal_filter.h), which keeps
-// the detail larger than the noise, while the bending energy removes what the filter leaves. Every vertex counts
-// alike, as in the bending energy, whose terms are per hinge, and as in the noise of a scan,
-// which is per point: weighted by vertex areas, the term held the vertices of small triangles
-// too loosely, and their normals ended worse than those of a bounded Taubin smoothing (see
-// benchmark/fairing_accuracy).
+// the detail larger than the noise, while the bending energy removes what the filter leaves.
+// Every vertex counts alike, as in the bending energy, whose terms are per hinge, and as in
+// the noise of a scan, which is per point: weighted by vertex areas, the term held the vertices
+// of small triangles too loosely, and their normals ended worse than those of a bounded Taubin
+// smoothing (see benchmark/fairing_accuracy).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H

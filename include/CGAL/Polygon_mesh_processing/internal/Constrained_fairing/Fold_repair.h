@@ -29,12 +29,6 @@ namespace Constrained_fairing {
 // The Laplacian steps of a re-seed.
 constexpr std::size_t reseed_steps = 10;
 
-inline Eigen::Vector3d area_normal(const Hinge_mesh& mesh, const Points& X, std::size_t f)
-{
-  const auto& t = mesh.triangles[f];
-  return (point(X, t[1]) - point(X, t[0])).cross(point(X, t[2]) - point(X, t[0]));
-}
-
 // The folded triangles of X.
 inline std::vector<Index> folded_triangles(const Hinge_mesh& mesh, const Points& X)
 {

@@ -131,6 +131,19 @@ private:
   }
 };
 
+// Triangle f's normal scaled by twice its area, and its centroid, at the points X.
+inline Eigen::Vector3d area_normal(const Hinge_mesh& mesh, const Points& X, std::size_t f)
+{
+  const auto& t = mesh.triangles[f];
+  return (point(X, t[1]) - point(X, t[0])).cross(point(X, t[2]) - point(X, t[0]));
+}
+
+inline Eigen::Vector3d centroid(const Hinge_mesh& mesh, const Points& X, std::size_t f)
+{
+  const auto& t = mesh.triangles[f];
+  return (point(X, t[0]) + point(X, t[1]) + point(X, t[2])) / 3;
+}
+
 } // namespace Constrained_fairing
 } // namespace internal
 } // namespace Polygon_mesh_processing
