@@ -56,7 +56,7 @@ struct Row
 double bending_energy(const Mesh& mesh)
 {
   Mesh copy = mesh;
-  return PMP::constrained_fairing(copy, 1, CGAL::parameters::number_of_iterations(0)).initial_energy;
+  return PMP::constrained_fairing(copy, 1, CGAL::parameters::number_of_iterations(0)).final_bending_energy;
 }
 
 std::vector<std::string> split(const std::string& s, char separator)

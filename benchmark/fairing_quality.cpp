@@ -146,7 +146,7 @@ int main(int argc, char* argv[])
 
   Mesh untouched = noisy;
   const double input_energy =
-    PMP::constrained_fairing(untouched, eps, CGAL::parameters::number_of_iterations(0)).initial_energy;
+    PMP::constrained_fairing(untouched, eps, CGAL::parameters::number_of_iterations(0)).final_bending_energy;
   print_row("input", benchmark::measure(noisy, noisy, clean_surface, eps, input_energy), 0, 0);
 
   auto run_mode = [&](const std::string& name, auto&& call, bool print = true) {

@@ -27,7 +27,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 double bending_energy(const Mesh& mesh)
 {
   Mesh copy = mesh;
-  return PMP::constrained_fairing(copy, 1, CGAL::parameters::number_of_iterations(0)).initial_energy;
+  return PMP::constrained_fairing(copy, 1, CGAL::parameters::number_of_iterations(0)).final_bending_energy;
 }
 
 double largest_move(const Mesh& result, const Mesh& input)

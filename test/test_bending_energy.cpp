@@ -15,23 +15,9 @@
 #include <string>
 
 namespace CF = CGAL::Polygon_mesh_processing::internal::Constrained_fairing;
+using test::Indexed;
 using test::Mesh;
 using test::Point;
-
-struct Indexed
-{
-  CF::Points X;
-  CF::Hinge_mesh hinges;
-
-  explicit Indexed(const Mesh& m) : X(num_vertices(m), 3), hinges(m, get(boost::vertex_index, m))
-  {
-    for(auto v : vertices(m))
-    {
-      const Point& p = m.point(v);
-      X.row(v.idx()) << p.x(), p.y(), p.z();
-    }
-  }
-};
 
 // Two triangles on the edge (0,0,0)-(1,0,0), the first in the plane z = 0, the second opened
 // by `angle` from it: the dihedral angle between the faces is `angle`.

@@ -6,7 +6,10 @@
 // some folds (no step flips a triangle), as a run capped before the repair shows; the full call
 // must leave none with the default method (a tenth at most with the Newton method), report the
 // counts (checked against an independent count), keep the bound exact and the objective never
-// rising as the callback hears it, and respect number_of_iterations.
+// rising as the callback hears it, and respect number_of_iterations. The full call gets twice
+// the default number of iterations: from this raw input, where many triangles start as slivers,
+// the descent alone takes about 1100 quasi-Newton or 350 Newton iterations (and ends at half
+// the energy it reached without the barrier against slivers), and the repair needs some left.
 
 #include "test_support.h"
 
@@ -64,6 +67,7 @@ int main()
     double previous = std::numeric_limits<double>::infinity();
     bool monotone = true;
     std::size_t last_iteration = 0;
+    const unsigned int budget = method == PMP::Constrained_fairing_method::QUASI_NEWTON ? 2000 : 400;
     const auto r = PMP::constrained_fairing(
       repaired, eps,
       CFP::initial_smoothing_steps(0, CFP::fairing_method(method, CFP::iteration_callback([&](std::size_t it, double e) {
@@ -71,7 +75,7 @@ int main()
                                                              previous = e;
                                                              last_iteration = it;
                                                              return true;
-                                                           }))));
+                                                           }, CGAL::parameters::number_of_iterations(budget)))));
     std::cout << "method " << int(method) << ": folded after 10 iterations " << folded_faces(plain) << " (reported "
               << r_plain.number_of_folded_faces << "); after the full call " << folded_faces(repaired) << " (reported "
               << r.number_of_folded_faces << ", " << r.number_of_unfolded_faces << " unfolded), " << r.number_of_iterations
@@ -90,7 +94,7 @@ int main()
       CHECK(10 * r.number_of_folded_faces <= r.number_of_folded_faces + r.number_of_unfolded_faces);
     CHECK(monotone);
     CHECK(r.final_energy <= r.initial_energy);
-    CHECK(r.number_of_iterations <= (method == PMP::Constrained_fairing_method::QUASI_NEWTON ? 1000u : 200u));
+    CHECK(r.number_of_iterations <= budget);
     CHECK(test::bound_violation(test::points(repaired), input, eps, PMP::Deviation_bound::BALL) <= 0);
   }
   return test::report("test_fold_repair");

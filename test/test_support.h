@@ -9,7 +9,9 @@
 #include "seeded_noise.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -30,6 +32,22 @@ using Vector = K::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
 inline int failures = 0;
+
+// A Surface_mesh as the solver sees it: its points in vertex index order and its hinges.
+struct Indexed
+{
+  CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Points X;
+  CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Hinge_mesh hinges;
+
+  explicit Indexed(const Mesh& m) : X(num_vertices(m), 3), hinges(m, get(boost::vertex_index, m))
+  {
+    for(auto v : vertices(m))
+    {
+      const Point& p = m.point(v);
+      X.row(v.idx()) << p.x(), p.y(), p.z();
+    }
+  }
+};
 
 #define CHECK(condition)                                                                      \
   do                                                                                          \

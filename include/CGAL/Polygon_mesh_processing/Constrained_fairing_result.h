@@ -57,6 +57,8 @@ enum class Constrained_fairing_defect
   INVALID_EPSILON,
   /// `fidelity_weight` is negative, NaN or infinite
   INVALID_FIDELITY_WEIGHT,
+  /// `sliver_barrier_weight` is negative, NaN or infinite
+  INVALID_SLIVER_BARRIER_WEIGHT,
   /// box parameters were given with `deviation_bound(Deviation_bound::BALL)`
   BOX_WITH_BALL,
   /// a box half-extent (`box_half_extents`, `vertex_box_half_extents_map`) is negative, NaN or infinite
@@ -89,11 +91,11 @@ struct Constrained_fairing_result
   std::size_t number_of_cg_iterations = 0;
   /// evaluations of the energy, with or without its gradient: the main cost of the default method
   std::size_t number_of_energy_evaluations = 0;
-  /// the objective's value on the input mesh: its bending energy, plus the fidelity term for
+  /// the objective's value on the input mesh: its bending energy plus the barrier against
+  /// slivers (`sliver_barrier_weight`), plus the fidelity term for
   /// `Constrained_fairing_objective::ACCURATE`
   double initial_energy = 0;
-  /// the objective's value on the output mesh: the bending energy for
-  /// `Constrained_fairing_objective::FAIREST`, plus the fidelity term for `ACCURATE`
+  /// the objective's value on the output mesh, made of the same terms
   double final_energy = 0;
   /// the bending energy of the output mesh
   double final_bending_energy = 0;

@@ -48,11 +48,11 @@ enum class Constrained_fairing_objective
   FAIREST,
   /// The bending energy plus a fidelity term, `mu / n * sum_i |p_i - a_i|^2 / t_i^2`
   /// (over the `n` vertices that may move, `t_i` the tolerance of vertex `i`,
-  /// `mu` the `fidelity_weight`), `a_i` the vertex's position after 16 steps of Taubin's
-  /// smoothing of the input, each step followed by a move back into the bound: the smoothing
-  /// keeps the detail larger than the noise, and the bending energy removes what it leaves.
-  /// Closer to the true surface of a noisy scan, a little less fair; the bound holds as with
-  /// `FAIREST`.
+  /// `mu` the `fidelity_weight`), `a_i` the vertex's position in a denoised copy of the input
+  /// (Taubin steps, bilateral filtering of the face normals and a vertex fit to them, each step
+  /// followed by a move back into the bound): the filter keeps the detail larger than the
+  /// noise, and the bending energy removes what it leaves. Closer to the true surface of a
+  /// noisy scan, a little less fair; the bound holds as with `FAIREST`.
   ACCURATE
 };
 
@@ -73,6 +73,7 @@ enum vertex_deviation_map_t { vertex_deviation_map };
 enum vertex_at_bound_map_t { vertex_at_bound_map };
 enum fairing_objective_t { fairing_objective };
 enum fidelity_weight_t { fidelity_weight };
+enum sliver_barrier_weight_t { sliver_barrier_weight };
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -131,6 +132,8 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(vertex_at_bound_map)
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fairing_objective)
 /// the weight of the fidelity term of the accurate objective, a `double`
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fidelity_weight)
+/// the weight of the barrier against slivers, a `double`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(sliver_barrier_weight)
 #undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
 
 } // namespace constrained_fairing_parameters

@@ -1,8 +1,9 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The function the solvers minimize: the bending energy (Bending_energy.h), plus, for the
-// accurate objective, a fidelity term that keeps the surface near an anchor a_i:
+// The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
+// against slivers (Sliver_barrier.h), plus, for the accurate objective, a fidelity term that
+// keeps the surface near an anchor a_i:
 //
 //   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
 //
@@ -24,6 +25,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Sliver_barrier.h>
 
 #include <cstddef>
 #include <vector>
@@ -36,7 +38,11 @@ namespace Constrained_fairing {
 class Fairing_objective
 {
 public:
-  Fairing_objective(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_bending(mesh, X0) {}
+  // `sliver_weight`: the weight of the barrier against slivers, 0 for none.
+  Fairing_objective(const Hinge_mesh& mesh, const Points& X0, double sliver_weight)
+    : m_mesh(mesh), m_bending(mesh, X0), m_barrier(mesh, X0, sliver_weight)
+  {
+  }
 
   // Adds the fidelity term of weight mu towards `anchor` (kept by reference); `tolerance(i)`
   // is vertex i's tolerance (no term for a vertex of tolerance 0, which does not move).
@@ -63,15 +69,16 @@ public:
 
   double bending_energy(const Points& X) { return m_bending.value(X); }
 
-  double value(const Points& X) { return m_bending.value(X) + fidelity(X); }
+  double value(const Points& X) { return m_bending.value(X) + m_barrier.value(X) + fidelity(X); }
 
   // As Bending_energy::value_and_gradient(); the fidelity term adds 2 w_i (x_i - x0_i) to the
   // gradient and 2 w_i to the stiffness, in every direction.
   double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales = nullptr)
   {
     const double bending = m_bending.value_and_gradient(X, G, scales);
+    const double barrier = m_barrier.add_gradient(X, G, scales);
     if(m_weight.empty())
-      return bending;
+      return bending + barrier;
     parallel_for_blocks(m_weight.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)
       {
@@ -81,7 +88,7 @@ public:
           scales->stiffness[static_cast<Eigen::Index>(i)] += k;
       }
     });
-    return bending + fidelity(X);
+    return bending + barrier + fidelity(X);
   }
 
 private:
@@ -100,6 +107,7 @@ private:
   const Hinge_mesh& m_mesh;
   const Points* m_anchor = nullptr;
   Bending_energy m_bending;
+  Sliver_barrier m_barrier;
   std::vector<double> m_weight; // empty without the fidelity term
   std::vector<double> m_partial;
 };

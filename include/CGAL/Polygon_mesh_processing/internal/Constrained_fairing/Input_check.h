@@ -57,6 +57,14 @@ inline Input_error fidelity_weight_error(double mu)
           "fidelity_weight must be finite and non-negative (" + std::to_string(mu) + ")"};
 }
 
+inline Input_error sliver_barrier_weight_error(double nu)
+{
+  if(std::isfinite(nu) && nu >= 0)
+    return {};
+  return {Constrained_fairing_defect::INVALID_SLIVER_BARRIER_WEIGHT,
+          "sliver_barrier_weight must be finite and non-negative (" + std::to_string(nu) + ")"};
+}
+
 // The links that the walks below rely on: next() is a permutation whose cycles are the faces
 // and the holes, and opposite() pairs halfedges with swapped ends. CGAL::is_valid_polygon_mesh()
 // also demands that no vertex be isolated, which this contract allows, and that the faces
