@@ -450,9 +450,9 @@ vertices move like the others, and border edges do not contribute to the energy.
 <b>Slivers.</b> A hinge of the bending energy costs less the shorter its edge and the flatter
 its triangles, so the energy alone ends with needles and caps of angles near 0 degrees. A
 barrier is added to it: with `q = 4 sqrt(3) A / (l1^2 + l2^2 + l3^2)` a triangle's quality (1
-when equilateral, `A` its area, `l` its edges) and `q0` that of a needle with a 3 degree angle,
-each of the `F` triangles with `q < q0` adds `w / F * (q0 / (q + q0 / 100) - 1)^2`, `w` the
-`sliver_barrier_weight`. Better triangles are left alone, so that the shape and the bending
+when equilateral, `A` its area, `l` its edges) and `q0` about that of a needle with a 3 degree
+angle, each of the `F` triangles with `q < q0` adds `w / F * (q0 / (q + q0 / 100) - 1)^2`, `w`
+the `sliver_barrier_weight`. Better triangles are left alone, so that the shape and the bending
 energy reached do not change; triangles degenerate in the input are left out, as in the energy.
 `sliver_barrier_weight(0)` minimizes the paper's energy alone.
 

@@ -6,18 +6,20 @@
 //
 //   B = nu / F * sum over the F triangles of q < q0 of  (q0 / (q + q0 / 100) - 1)^2,
 //
-// q0 the quality of a needle with a 3 degree angle, nu the weight. Why: a hinge of the bending
-// energy costs |e|^2 / A_e times its bend, so the energy drops when an edge at a bend shrinks
-// or a triangle there flattens, and its minima are full of needles and caps (angles down to
-// 0.0003 degree on the noisy bunny), whatever else holds the vertices (a uniform Laplacian
-// term along the surface, an edge length term: see the user manual). The barrier leaves every triangle of quality q0 and
-// more alone, so it changes neither the shape nor, in our measurements, the bending energy
-// reached; it is finite everywhere, 99^2 nu / F for a degenerate triangle, and smooth where it
+// q0 about the quality of a needle with a 3 degree angle, nu the weight. Why: a hinge of the
+// bending energy costs |e|^2 / A_e times its bend, so the energy drops when an edge at a bend
+// shrinks or a triangle there flattens, and its minima are full of needles and caps (angles
+// down to 0.0003 degree on the noisy bunny), whatever else holds the vertices (a uniform
+// Laplacian term along the surface, an edge length term: see the user manual). The barrier
+// leaves every triangle of quality q0 and more alone, so it changes neither the shape nor, in
+// our measurements, the bending energy reached; it is finite everywhere, 99^2 nu / F for a
+// triangle of zero area (one shrunk to a point has no shape and no term), and smooth where it
 // is nonzero. Like the bending energy, it is dimensionless and the same on a refined mesh, and
 // triangles that are degenerate in the input are left out (Bending_energy.h).
 //
-// Evaluation: the qualities in parallel, then the gradient of the few triangles below q0 in
-// order, so that results do not depend on the number of threads.
+// Evaluation: each block of triangles lists its slivers in parallel, then their terms are
+// summed and their gradients added in triangle order, so that results do not depend on the
+// number of threads.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SLIVER_BARRIER_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SLIVER_BARRIER_H
@@ -40,7 +42,8 @@ namespace Constrained_fairing {
 class Sliver_barrier
 {
 public:
-  // sqrt(3) sin(3 degrees): the quality of an isosceles needle of apex angle 3 degrees.
+  // sqrt(3) sin(3 degrees), within 0.2 % the quality of an isosceles needle of apex angle 3
+  // degrees.
   static constexpr double threshold = 0.0906485352754803;
 
   Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight) : m_mesh(mesh)
@@ -65,9 +68,8 @@ public:
   double add_gradient(const Points& X, Points& G, Vertex_scales* scales) { return evaluate(X, &G, scales); }
 
 private:
-  // Each block of triangles lists its slivers in parallel, then they are summed in order. The
-  // test needs no square root: q < q0 is 12 |N|^2 < q0^2 S^2, N the doubled area vector and S the
-  // sum of the squared edges.
+  // The test needs no square root: q < q0 is 12 |N|^2 < q0^2 S^2, N the doubled area vector and
+  // S the sum of the squared edges.
   double evaluate(const Points& X, Points* G, Vertex_scales* scales)
   {
     if(m_weight == 0)
