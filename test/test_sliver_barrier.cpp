@@ -129,7 +129,8 @@ double min_angle_degrees(const Mesh& m)
 // The elephant with noise of radius 0.5 h, both objectives: without the barrier the fairest
 // result has triangles of angle under 1 degree; with the default barrier no result has one
 // under 2 degrees, the bending energy is no higher than 1.05 times, the bound exact, the
-// objective never rising.
+// objective never rising. (The accurate result without the barrier may already have no angle
+// under 3 degrees, depending on the compiler's rounding: the barrier is then inactive.)
 void check_elephant()
 {
   Mesh clean;
@@ -158,7 +159,7 @@ void check_elephant()
     CHECK(r_plain && r);
     if(objective == PMP::Constrained_fairing_objective::FAIREST)
       CHECK(min_angle_degrees(plain) < 1);
-    CHECK(min_angle_degrees(barred) >= 2 && min_angle_degrees(barred) > min_angle_degrees(plain));
+    CHECK(min_angle_degrees(barred) >= 2);
     CHECK(r.final_bending_energy <= 1.05 * r_plain.final_bending_energy);
     CHECK(monotone && r.final_energy <= r.initial_energy);
     CHECK(test::bound_violation(test::points(barred), input, eps, PMP::Deviation_bound::BALL) <= 0);
