@@ -100,13 +100,17 @@ private:
     return sum;
   }
 
-  double quality(const Points& X, std::size_t f) const
+  // S, the sum of triangle f's squared edges.
+  double squared_edges(const Points& X, std::size_t f) const
   {
     const auto& t = m_mesh.triangles[f];
-    const double squared_edges = (point(X, t[1]) - point(X, t[0])).squaredNorm() +
-                                 (point(X, t[2]) - point(X, t[1])).squaredNorm() +
-                                 (point(X, t[0]) - point(X, t[2])).squaredNorm();
-    return 2 * std::sqrt(3.) * area_normal(m_mesh, X, f).norm() / squared_edges;
+    return (point(X, t[1]) - point(X, t[0])).squaredNorm() + (point(X, t[2]) - point(X, t[1])).squaredNorm() +
+           (point(X, t[0]) - point(X, t[2])).squaredNorm();
+  }
+
+  double quality(const Points& X, std::size_t f) const
+  {
+    return 2 * std::sqrt(3.) * area_normal(m_mesh, X, f).norm() / squared_edges(X, f);
   }
 
   // With B_f = w (r - 1)^2 and r = q0 / (q + q0 / 100): dB_f = outer * dr, dr = inner * dq,
@@ -119,8 +123,7 @@ private:
     const Eigen::Vector3d N = area_normal(m_mesh, X, f);
     const double length = N.norm();
     const Eigen::Vector3d n = length > 0 ? Eigen::Vector3d(N / length) : Eigen::Vector3d::Zero();
-    const double A = length / 2, S = (p[1] - p[0]).squaredNorm() + (p[2] - p[1]).squaredNorm() +
-                                      (p[0] - p[2]).squaredNorm();
+    const double A = length / 2, S = squared_edges(X, f);
     for(int k = 0; k < 3; ++k)
     {
       const Eigen::Vector3d& a = p[(k + 1) % 3];
