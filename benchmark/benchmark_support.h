@@ -1,8 +1,8 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// What the benchmark programs share: the mesh type, seeded noise, the mean edge length, the
-// CHOLMOD solver type and median timing.
+// What the benchmark programs share: the mesh type, seeded noise, the mean edge length, angles,
+// the CHOLMOD solver type and median timing.
 
 #ifndef CGAL_CONSTRAINED_FAIRING_BENCHMARK_SUPPORT_H
 #define CGAL_CONSTRAINED_FAIRING_BENCHMARK_SUPPORT_H
@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -42,6 +43,25 @@ using test::add_noise;
 using Cholmod_solver =
   CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >;
 #endif
+
+inline double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
+{
+  const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
+  return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI;
+}
+
+// The smallest angle of the triangles of `m`, in degrees.
+inline double smallest_angle_deg(const Mesh& m)
+{
+  double smallest = 180;
+  for(auto f : faces(m))
+  {
+    const auto h = halfedge(f, m);
+    const Point a = m.point(source(h, m)), b = m.point(target(h, m)), c = m.point(target(next(h, m), m));
+    smallest = (std::min)({smallest, angle_deg(b - a, c - a), angle_deg(a - b, c - b), angle_deg(a - c, b - c)});
+  }
+  return smallest;
+}
 
 // The large test cases: `base` Loop subdivided `levels` times (CGAL's Subdivision_method_3),
 // then seeded uniform-ball noise of radius 0.25 h, h the subdivided mesh's mean edge length.

@@ -10,9 +10,9 @@
 // and given seeded noise of 0.25 h; epsilon = 0.25 h. Reports, all measured in this process,
 // medians of N runs (default 3):
 //  - the default call as a user makes it: time, iterations, energy evaluations, energy
-//    (the objective, and the bending energy alone);
+//    (the objective, and the bending energy alone), the result's smallest angle;
 //  - the same call without the barrier against slivers (sliver_barrier_weight(0)): time,
-//    iterations, bending energy, and the time as a ratio of it;
+//    iterations, bending energy, smallest angle, and the time as a ratio of it;
 //  - the peak resident memory of the whole process during the first call (the mesh included),
 //    in bytes per triangle;
 //  - where the time goes: setup (input checks, connectivity, the energy's set-up and first
@@ -80,6 +80,7 @@ int main(int argc, char* argv[])
   benchmark::reset_peak_memory();
   PMP::Constrained_fairing_result r = PMP::constrained_fairing(noisy, eps);
   const double peak = benchmark::peak_memory_bytes();
+  const double smallest_angle = benchmark::smallest_angle_deg(noisy);
   restore(noisy);
 
   const double seconds = benchmark::median_seconds(runs, [&] {
@@ -87,9 +88,14 @@ int main(int argc, char* argv[])
     restore(noisy);
   });
   PMP::Constrained_fairing_result r_plain;
-  const double plain_seconds = benchmark::median_seconds(runs, [&] {
+  double plain_smallest_angle = 0;
+  const double plain_seconds = benchmark::median_of(runs, [&] {
+    const auto start = std::chrono::steady_clock::now();
     r_plain = PMP::constrained_fairing(noisy, eps, PMP::constrained_fairing_parameters::sliver_barrier_weight(0.));
+    const double seconds = benchmark::seconds_since(start);
+    plain_smallest_angle = benchmark::smallest_angle_deg(noisy);
     restore(noisy);
+    return seconds;
   });
   const double setup = benchmark::median_seconds(runs, [&] {
     PMP::constrained_fairing(noisy, eps, CGAL::parameters::number_of_iterations(0));
@@ -131,10 +137,11 @@ int main(int argc, char* argv[])
   const double evaluations = double(r.number_of_energy_evaluations) * evaluation;
   std::cout << std::setprecision(4) << "default call:      " << seconds << " s, " << r.number_of_iterations
             << " iterations, " << r.number_of_energy_evaluations << " evaluations, energy " << r.initial_energy
-            << " -> " << r.final_energy << " (bending " << r.final_bending_energy << ")\n"
+            << " -> " << r.final_energy << " (bending " << r.final_bending_energy << "), smallest angle "
+            << smallest_angle << " deg\n"
             << "no barrier:        " << plain_seconds << " s, " << r_plain.number_of_iterations
-            << " iterations, bending energy " << r_plain.final_bending_energy << "; the default call takes "
-            << seconds / plain_seconds << " of it\n"
+            << " iterations, bending energy " << r_plain.final_bending_energy << ", smallest angle "
+            << plain_smallest_angle << " deg; the default call takes " << seconds / plain_seconds << " of it\n"
             << "peak memory:       " << peak / (1 << 20) << " MiB, " << peak / triangles << " bytes per triangle\n"
             << "breakdown:         setup " << setup << " s, energy+gradient " << evaluations << " s ("
             << r.number_of_energy_evaluations << " x " << evaluation << " s), other " << seconds - setup - evaluations

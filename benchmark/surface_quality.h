@@ -46,12 +46,6 @@ struct Quality
   std::size_t folds = 0, folds_at_creases = 0;
 };
 
-inline double angle_deg(const K::Vector_3& a, const K::Vector_3& b)
-{
-  const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
-  return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI;
-}
-
 // The clean mesh's distance tree, its face normals, and its faces at creases sharper than 90
 // degrees.
 struct Clean_surface
@@ -115,13 +109,9 @@ inline Quality measure(const Mesh& result, const Mesh& input, const Clean_surfac
       ++q.folds;
       q.folds_at_creases += clean.at_crease[f.idx()];
     }
-    const auto h = halfedge(f, result);
-    const Point a = result.point(source(h, result)), b = result.point(target(h, result)),
-                c = result.point(target(next(h, result), result));
-    q.min_angle_deg =
-      (std::min)({q.min_angle_deg, angle_deg(b - a, c - a), angle_deg(a - b, c - b), angle_deg(a - c, b - c)});
   }
   q.normal_error_deg = normal_sum / double(num_faces(result));
+  q.min_angle_deg = smallest_angle_deg(result);
   return q;
 }
 

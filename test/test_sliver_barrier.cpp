@@ -1,11 +1,12 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The barrier against slivers: hand-computed values, zero on good triangles, invariance under
-// uniform scaling, triangles degenerate in the input left out, the analytic gradient against
-// central finite differences; then on the noisy elephant, that the energy alone leaves slivers
-// and the barrier removes them without raising the bending energy, the bound holding exactly
-// and the objective never rising; weight 0 is the energy alone; a bad weight is rejected.
+// The barrier against slivers: hand-computed values, one term per sliver, zero on good
+// triangles, invariance under uniform scaling, triangles degenerate in the input left out, the
+// analytic gradient against central finite differences; then on the noisy elephant, that the
+// energy alone leaves slivers and the barrier removes them without raising the bending energy,
+// the bound holding exactly and the objective never rising; weight 0 is the energy alone; a bad
+// weight is rejected.
 
 #include "test_support.h"
 
@@ -27,13 +28,17 @@ using test::Indexed;
 using test::Mesh;
 using test::Point;
 
-// One isosceles triangle of apex angle `degrees` at the origin, legs of length `scale`.
-Mesh needle(double degrees, double scale = 1)
+// `count` isosceles triangles of apex angle `degrees`, legs of length `scale`, side by side.
+Mesh needle(double degrees, double scale = 1, int count = 1)
 {
   const double a = degrees * CGAL_PI / 180;
   Mesh m;
-  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(scale, 0, 0)),
-             m.add_vertex(Point(scale * std::cos(a), scale * std::sin(a), 0)));
+  for(int k = 0; k < count; ++k)
+  {
+    const double z = 2 * scale * k;
+    m.add_face(m.add_vertex(Point(0, 0, z)), m.add_vertex(Point(scale, 0, z)),
+               m.add_vertex(Point(scale * std::cos(a), scale * std::sin(a), z)));
+  }
   return m;
 }
 
@@ -54,6 +59,8 @@ void check_values()
     CHECK(std::abs(barrier(needle(degrees), 7) - 7 * (r - 1) * (r - 1)) <= 1e-12 * 7 * (r - 1) * (r - 1));
     // Dimensionless: the same at any size.
     CHECK(std::abs(barrier(needle(degrees, 1e-3), 7) - barrier(needle(degrees), 7)) <= 1e-9 * barrier(needle(degrees), 7));
+    // Per triangle, not per mean: five needles cost five times one.
+    CHECK(std::abs(barrier(needle(degrees, 1, 5), 7) - 5 * barrier(needle(degrees), 7)) <= 1e-12 * 5 * barrier(needle(degrees), 7));
   }
   // The threshold is the needle of 3 degrees; better triangles cost nothing.
   CHECK(std::abs(CF::Sliver_barrier::threshold - std::sqrt(3.) * std::sin(3 * CGAL_PI / 180)) < 1e-15);

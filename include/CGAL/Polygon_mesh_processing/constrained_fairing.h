@@ -57,10 +57,12 @@ using Default_sparse_linear_solver =
 // anchor is made by Bilateral_normal_filter.h.
 constexpr double default_fidelity_weight = 1e4;
 
-// The weight of the barrier against slivers (Sliver_barrier.h), chosen on the same benchmark:
-// the smallest angle over its set was 1.1 (accurate objective) and 1.7 degrees (fairest) at
-// 1000, 1.8 and 2.4 at 10000, the distance to the truth and the normals unchanged.
-constexpr double default_sliver_barrier_weight = 1e4;
+// The weight of the barrier against slivers (Sliver_barrier.h), per triangle: at 1, a needle of
+// 1.5 degrees costs 0.92, about as much as a right-angle bend between two equilateral triangles
+// (0.87). On the benchmark fairing_accuracy, weights 0.5, 1 and 2 gave the same distance to the
+// truth, normals and energies; the smallest angle over the set was 1.7, 1.8 and 2.2 degrees
+// (accurate objective) and 2.3, 2.6 and 2.7 (fairest).
+constexpr double default_sliver_barrier_weight = 1;
 
 // The rounds of fold repair at most.
 constexpr std::size_t fold_repair_rounds = 3;
@@ -451,8 +453,8 @@ vertices move like the others, and border edges do not contribute to the energy.
 its triangles, so the energy alone ends with needles and caps of angles near 0 degrees. A
 barrier is added to it: with `q = 4 sqrt(3) A / (l1^2 + l2^2 + l3^2)` a triangle's quality (1
 when equilateral, `A` its area, `l` its edges) and `q0` about that of a needle with a 3 degree
-angle, each of the `F` triangles with `q < q0` adds `w / F * (q0 / (q + q0 / 100) - 1)^2`, `w`
-the `sliver_barrier_weight`. Better triangles are left alone, so that the shape and the bending
+angle, each triangle with `q < q0` adds `w (q0 / (q + q0 / 100) - 1)^2`, `w` the
+`sliver_barrier_weight`. Better triangles are left alone, so that the shape and the bending
 energy reached do not change; triangles degenerate in the input are left out, as in the energy.
 `sliver_barrier_weight(0)` minimizes the paper's energy alone.
 
@@ -633,12 +635,12 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDefault{`10000`}
   \cgalParamNEnd
   \cgalParamNBegin{sliver_barrier_weight}
-    \cgalParamDescription{the weight `w` of the barrier against slivers (see above): the
-                          barrier is about `w` when every triangle is a needle of angle 1.5
-                          degrees, and `0` when no angle is below 3 degrees; `0` leaves the
+    \cgalParamDescription{the weight `w` of the barrier against slivers (see above): each
+                          triangle that is a needle of angle 1.5 degrees adds about `w`, and a
+                          triangle with no angle below 3 degrees nothing; `0` leaves the
                           slivers that the energy alone makes}
     \cgalParamType{double, finite and non-negative}
-    \cgalParamDefault{`10000`}
+    \cgalParamDefault{`1`}
   \cgalParamNEnd
   \cgalParamNBegin{energy_decrease_threshold}
     \cgalParamDescription{the stopping threshold on the relative energy decrease per

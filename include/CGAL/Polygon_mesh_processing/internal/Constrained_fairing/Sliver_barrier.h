@@ -4,7 +4,7 @@
 // A barrier against slivers, added to the objective: with q = 4 sqrt(3) A / (l1^2 + l2^2 + l3^2)
 // a triangle's quality (1 when equilateral, 0 when degenerate, A its area, l its edges),
 //
-//   B = nu / F * sum over the F triangles of q < q0 of  (q0 / (q + q0 / 100) - 1)^2,
+//   B = nu * sum over the triangles of q < q0 of  (q0 / (q + q0 / 100) - 1)^2,
 //
 // q0 about the quality of a needle with a 3 degree angle, nu the weight. Why: a hinge of the
 // bending energy costs |e|^2 / A_e times its bend, so the energy drops when an edge at a bend
@@ -12,10 +12,13 @@
 // down to 0.0003 degree on the noisy bunny), whatever else holds the vertices (a uniform
 // Laplacian term along the surface, an edge length term: see the user manual). The barrier
 // leaves every triangle of quality q0 and more alone, so it changes neither the shape nor, in
-// our measurements, the bending energy reached; it is finite everywhere, 99^2 nu / F for a
+// our measurements, the bending energy reached; it is finite everywhere, 99^2 nu for a
 // triangle of zero area (one shrunk to a point has no shape and no term), and smooth where it
-// is nonzero. Like the bending energy, it is dimensionless and the same on a refined mesh, and
-// triangles that are degenerate in the input are left out (Bending_energy.h).
+// is nonzero. Like the bending energy it is dimensionless, and like the hinges that pull a
+// triangle flat its terms are per triangle, not divided by their number: divided by it, the
+// barrier weakened as the mesh was refined, and the smallest angle on the noisy bunny fell
+// from 2.7 to 1.3 degrees between 75 k and 1.2 M triangles (2.9 at both per triangle).
+// Triangles that are degenerate in the input are left out (Bending_energy.h).
 //
 // Evaluation: each block of triangles lists its slivers in parallel, then their terms are
 // summed and their gradients added in triangle order, so that results do not depend on the
@@ -49,7 +52,7 @@ public:
   Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight) : m_mesh(mesh)
   {
     const std::size_t nt = mesh.triangles.size();
-    m_weight = nt == 0 ? 0 : weight / double(nt);
+    m_weight = weight;
     m_used.assign(nt, 1);
     if(m_weight > 0)
       for(std::size_t f = 0; f < nt; ++f)
@@ -137,7 +140,7 @@ private:
   }
 
   const Hinge_mesh& m_mesh;
-  double m_weight = 0; // nu / F
+  double m_weight = 0; // nu
   std::vector<unsigned char> m_used; // not degenerate in the input
   std::vector<std::vector<Index> > m_slivers; // per block of triangles
 };
