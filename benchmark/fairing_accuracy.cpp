@@ -16,6 +16,10 @@
 // measure separately (the geometric mean over the set decides). Ours: the default call
 // (Constrained_fairing_objective::FAIREST) and the accurate objective. Also the noise estimate
 // (estimate_noise_level) against the true noise radius.
+// The noise-free control runs every method on the clean mesh itself with the same epsilon: what
+// a method takes away from the clean mesh when there is no noise to remove, its own roughness
+// at the scale of the bound (the terraces of an isosurface, the facets of a decimated mesh),
+// which the errors above count too. Also the noise estimate of the clean mesh.
 
 #include "bounded_smoothers.h"
 #include "surface_quality.h"
@@ -68,6 +72,45 @@ std::vector<std::string> split(const std::string& s, char separator)
   return parts;
 }
 
+// The runs of every method on one input: the yardsticks at each iteration count, our modes.
+struct Runs
+{
+  Row input;
+  std::vector<Row> laplacian, taubin, ours;
+};
+
+// Runs every method on `input` within `eps`, measured against `surface`; our modes are timed
+// over `runs` runs.
+Runs run_methods(const Mesh& input, double eps, const Clean_surface& surface, const std::vector<int>& counts,
+                 const std::vector<Mode>& modes, double fidelity_weight, int runs)
+{
+  Runs r;
+  r.input.q = measure(input, input, surface, eps, bending_energy(input));
+  for(auto kind : {Bounded_smoother::LAPLACIAN, Bounded_smoother::TAUBIN})
+  {
+    const Bounded_smoother smoother(input, eps, kind);
+    Mesh m = input;
+    int done = 0;
+    for(int count : counts)
+    {
+      for(; done < count; ++done)
+        smoother.iterate(m);
+      (kind == Bounded_smoother::LAPLACIAN ? r.laplacian : r.taubin)
+        .push_back({measure(m, input, surface, eps, bending_energy(m)), 0.});
+    }
+  }
+  for(const Mode& mode : modes)
+  {
+    Mesh m;
+    const double seconds = median_seconds(runs, [&] {
+      m = input;
+      PMP::constrained_fairing(m, eps, CFP::fairing_objective(mode.objective, CFP::fidelity_weight(fidelity_weight)));
+    });
+    r.ours.push_back({measure(m, input, surface, eps, bending_energy(m)), seconds});
+  }
+  return r;
+}
+
 double geometric_mean(const std::vector<double>& values)
 {
   double sum = 0;
@@ -108,10 +151,9 @@ int main(int argc, char* argv[])
   {
     std::string name;
     std::size_t faces;
-    double clean_energy, clean_min_angle, noise_ratio;
+    double clean_energy, clean_min_angle, noise_ratio, clean_noise_ratio;
     std::size_t clean_creased_faces;
-    Row input;
-    std::vector<Row> laplacian, taubin, ours;
+    Runs noisy, control; // from the noisy mesh, and from the clean mesh itself
   };
   std::vector<Case> cases;
   for(const auto& file : files)
@@ -136,39 +178,19 @@ int main(int argc, char* argv[])
       c.noise_ratio = PMP::estimate_noise_level(noisy) / eps;
       c.clean_min_angle = measure(clean, clean, surface, eps, 0).min_angle_deg;
       c.clean_creased_faces = surface.creased_faces;
-      c.input.q = measure(noisy, noisy, surface, eps, bending_energy(noisy));
-      for(auto kind : {Bounded_smoother::LAPLACIAN, Bounded_smoother::TAUBIN})
-      {
-        const Bounded_smoother smoother(noisy, eps, kind);
-        Mesh m = noisy;
-        int done = 0;
-        for(int count : counts)
-        {
-          for(; done < count; ++done)
-            smoother.iterate(m);
-          (kind == Bounded_smoother::LAPLACIAN ? c.laplacian : c.taubin)
-            .push_back({measure(m, noisy, surface, eps, bending_energy(m)), 0.});
-        }
-      }
-      for(const Mode& mode : modes)
-      {
-        Mesh m;
-        const double seconds = median_seconds(arguments.runs, [&] {
-          m = noisy;
-          PMP::constrained_fairing(m, eps,
-                                   CFP::fairing_objective(mode.objective, CFP::fidelity_weight(fidelity_weight)));
-        });
-        c.ours.push_back({measure(m, noisy, surface, eps, bending_energy(m)), seconds});
-      }
+      c.clean_noise_ratio = PMP::estimate_noise_level(clean) / eps;
+      c.noisy = run_methods(noisy, eps, surface, counts, modes, fidelity_weight, arguments.runs);
+      c.control = run_methods(clean, eps, surface, counts, modes, fidelity_weight, 1);
       std::cout << c.name << ": " << num_vertices(clean) << " vertices, eps " << eps << ", clean energy "
                 << c.clean_energy << ", min angle " << c.clean_min_angle << " deg, "
                 << c.clean_creased_faces << " faces at creases sharper than 90"
-                << " deg, input RMS " << c.input.q.surface_rms / eps << " eps, normal "
-                << c.input.q.normal_error_deg << " deg, noise estimate " << c.noise_ratio << " eps" << std::endl;
+                << " deg, input RMS " << c.noisy.input.q.surface_rms / eps << " eps, normal "
+                << c.noisy.input.q.normal_error_deg << " deg, noise estimate " << c.noise_ratio
+                << " eps (of the clean mesh: " << c.clean_noise_ratio << " eps)" << std::endl;
       cases.push_back(c);
     }
 
-  // The yardsticks' best fixed counts over the set, per measure.
+  // The yardsticks' best fixed counts over the set (from the noisy meshes), per measure.
   const auto best_count = [&](auto member, auto rows) {
     std::size_t best = 0;
     double best_mean = HUGE_VAL;
@@ -176,7 +198,7 @@ int main(int argc, char* argv[])
     {
       std::vector<double> values;
       for(const Case& c : cases)
-        values.push_back((c.*rows)[k].q.*member);
+        values.push_back((c.noisy.*rows)[k].q.*member);
       const double mean = geometric_mean(values);
       if(mean < best_mean)
       {
@@ -186,49 +208,60 @@ int main(int argc, char* argv[])
     }
     return best;
   };
-  const std::size_t lap_rms = best_count(&Quality::surface_rms, &Case::laplacian),
-                    lap_normal = best_count(&Quality::normal_error_deg, &Case::laplacian),
-                    tau_rms = best_count(&Quality::surface_rms, &Case::taubin),
-                    tau_normal = best_count(&Quality::normal_error_deg, &Case::taubin);
+  const std::size_t lap_rms = best_count(&Quality::surface_rms, &Runs::laplacian),
+                    lap_normal = best_count(&Quality::normal_error_deg, &Runs::laplacian),
+                    tau_rms = best_count(&Quality::surface_rms, &Runs::taubin),
+                    tau_normal = best_count(&Quality::normal_error_deg, &Runs::taubin);
   std::cout << "\nbest fixed counts over the set: clamped Laplacian " << counts[lap_rms] << " (RMS), "
             << counts[lap_normal] << " (normal); clamped Taubin " << counts[tau_rms] << " (RMS), "
             << counts[tau_normal] << " (normal)\n";
-  std::cout << "RMS in the mesh's units; ratios to the better yardstick at its best count; energy relative to the clean mesh's\n\n";
+  std::cout << "RMS in the mesh's units; ratios to the better yardstick at its best count; energy relative to the clean mesh's\n";
 
-  std::cout << std::left << std::setw(18) << "case" << std::setw(22) << "method" << std::right << std::setw(8) << "RMS"
-            << std::setw(8) << "normal" << std::setw(8) << "x RMS" << std::setw(8) << "x norm" << std::setw(9)
-            << "energy" << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(8) << "crease"
-            << std::setw(8) << "s" << "\n";
+  // The table of the runs on the noisy meshes, with our ratios to the better yardstick and their
+  // geometric means; then that of the noise-free control, with each method's share of its own
+  // error on the noisy mesh (surface RMS and normal error) that it also has without noise.
+  const auto header = [](const std::string& ratio_rms, const std::string& ratio_normal) {
+    std::cout << "\n" << std::left << std::setw(18) << "case" << std::setw(22) << "method" << std::right << std::setw(8)
+              << "RMS" << std::setw(8) << "normal" << std::setw(8) << ratio_rms << std::setw(8) << ratio_normal
+              << std::setw(9) << "energy" << std::setw(9) << "min ang" << std::setw(7) << "folds" << std::setw(8)
+              << "crease" << std::setw(8) << "s" << "\n";
+  };
+  const auto print = [](const Case& c, const std::string& method, const Row& row, const Row* reference) {
+    std::cout << std::left << std::setw(18) << c.name << std::setw(22) << method << std::right << std::fixed
+              << std::setprecision(4) << std::setw(8) << row.q.surface_rms << std::setprecision(2) << std::setw(8)
+              << row.q.normal_error_deg;
+    if(reference)
+      std::cout << std::setw(8) << row.q.surface_rms / reference->q.surface_rms << std::setw(8)
+                << row.q.normal_error_deg / reference->q.normal_error_deg;
+    else
+      std::cout << std::setw(16) << "";
+    std::cout << std::setw(9) << row.q.energy / c.clean_energy << std::setw(9) << row.q.min_angle_deg << std::setw(7)
+              << row.q.folds << std::setw(8) << row.q.folds_at_creases << std::setw(8) << std::setprecision(3)
+              << row.seconds << std::defaultfloat << "\n";
+  };
+
+  header("x RMS", "x norm");
   std::vector<std::vector<double> > rms_ratios(modes.size()), normal_ratios(modes.size());
   std::vector<bool> holds(modes.size(), true);
   for(const Case& c : cases)
   {
-    const double best_rms = (std::min)(c.laplacian[lap_rms].q.surface_rms, c.taubin[tau_rms].q.surface_rms);
-    const double best_normal =
-      (std::min)(c.laplacian[lap_normal].q.normal_error_deg, c.taubin[tau_normal].q.normal_error_deg);
-    const auto print = [&](const std::string& method, const Row& r, bool ratios) {
-      std::cout << std::left << std::setw(18) << c.name << std::setw(22) << method << std::right << std::fixed
-                << std::setprecision(4) << std::setw(8) << r.q.surface_rms << std::setprecision(2) << std::setw(8)
-                << r.q.normal_error_deg;
-      if(ratios)
-        std::cout << std::setw(8) << r.q.surface_rms / best_rms << std::setw(8) << r.q.normal_error_deg / best_normal;
-      else
-        std::cout << std::setw(16) << "";
-      std::cout << std::setw(9) << r.q.energy / c.clean_energy << std::setw(9) << r.q.min_angle_deg << std::setw(7)
-                << r.q.folds << std::setw(8) << r.q.folds_at_creases << std::setw(8) << std::setprecision(3)
-                << r.seconds << std::defaultfloat << "\n";
-    };
-    print("input", c.input, false);
-    print("clamped Laplacian", c.laplacian[lap_rms], false);
-    print("clamped Taubin", c.taubin[tau_rms], false);
+    const Runs& r = c.noisy;
+    Row best; // the better yardstick's figures, per measure
+    best.q.surface_rms = (std::min)(r.laplacian[lap_rms].q.surface_rms, r.taubin[tau_rms].q.surface_rms);
+    best.q.normal_error_deg =
+      (std::min)(r.laplacian[lap_normal].q.normal_error_deg, r.taubin[tau_normal].q.normal_error_deg);
+    print(c, "input", r.input, nullptr);
+    print(c, "clamped Laplacian", r.laplacian[lap_rms], nullptr);
+    print(c, "clamped Taubin", r.taubin[tau_rms], nullptr);
     for(std::size_t m = 0; m < modes.size(); ++m)
     {
-      const Row& r = c.ours[m];
-      print(modes[m].name(), r, true);
-      rms_ratios[m].push_back(r.q.surface_rms / best_rms);
-      normal_ratios[m].push_back(r.q.normal_error_deg / best_normal);
-      holds[m] = holds[m] && r.q.ball_holds && r.q.surface_rms <= best_rms && r.q.normal_error_deg <= best_normal &&
-                 r.q.energy <= 1.5 * c.clean_energy && r.q.min_angle_deg >= (std::min)(1., c.clean_min_angle) && r.q.folds * 10000 < c.faces;
+      const Row& row = r.ours[m];
+      print(c, modes[m].name(), row, &best);
+      rms_ratios[m].push_back(row.q.surface_rms / best.q.surface_rms);
+      normal_ratios[m].push_back(row.q.normal_error_deg / best.q.normal_error_deg);
+      holds[m] = holds[m] && row.q.ball_holds && row.q.surface_rms <= best.q.surface_rms &&
+                 row.q.normal_error_deg <= best.q.normal_error_deg && row.q.energy <= 1.5 * c.clean_energy &&
+                 row.q.min_angle_deg >= (std::min)(1., c.clean_min_angle) && row.q.folds * 10000 < c.faces;
     }
   }
   std::cout << "\n(targets per case: RMS and normal at most the better yardstick's, energy at most 1.5 the clean "
@@ -237,6 +270,20 @@ int main(int argc, char* argv[])
     std::cout << modes[m].name() << ": geometric mean over the set of the ratios: RMS "
               << geometric_mean(rms_ratios[m]) << ", normal " << geometric_mean(normal_ratios[m])
               << (holds[m] ? "; every case within the targets" : "; some case misses a target") << "\n";
+
+  std::cout << "\nnoise-free control: every method run on the clean mesh itself, same epsilon, the yardsticks at their\n"
+               "best count for normals; its departure from the clean mesh is the clean mesh's own roughness at the\n"
+               "scale of epsilon that it takes away (of RMS, of norm: the share of the method's own error on the\n"
+               "noisy mesh that it also has without noise)\n";
+  header("of RMS", "of norm");
+  for(const Case& c : cases)
+  {
+    print(c, "clamped Laplacian", c.control.laplacian[lap_normal], &c.noisy.laplacian[lap_normal]);
+    print(c, "clamped Taubin", c.control.taubin[tau_normal], &c.noisy.taubin[tau_normal]);
+    for(std::size_t m = 0; m < modes.size(); ++m)
+      print(c, modes[m].name(), c.control.ours[m], &c.noisy.ours[m]);
+  }
+
   double worst = 1;
   std::size_t within = 0;
   for(const Case& c : cases)
@@ -245,7 +292,7 @@ int main(int argc, char* argv[])
       worst = c.noise_ratio;
     within += std::abs(c.noise_ratio - 1) <= 0.25;
   }
-  std::cout << "noise estimate: within 25 % of the noise radius on " << within << " of " << cases.size()
+  std::cout << "\nnoise estimate: within 25 % of the noise radius on " << within << " of " << cases.size()
             << " cases; worst ratio " << worst << "\n";
   return EXIT_SUCCESS;
 }
