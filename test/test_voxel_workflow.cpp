@@ -10,11 +10,15 @@
 //    lower bending energy, and on the sphere it falls at least 8x against the staircase (the
 //    sphere is the bending energy's own minimizer, while on the elephant, whose curvature
 //    varies, the fairest surface in the cells departs from the true one: about 3x);
+//  - on 1 x 1 x 3 voxels the distance to the true surface falls at least 3x against the
+//    staircase on the sphere and on the elephant at 128 voxels (at 64 voxels the elephant's
+//    facets are only a few voxels wide, and the fairest surface rounds them: about 2.6x,
+//    printed);
 //  - on 1 x 1 x 3 voxels the fairing does not stall in the terraces: it reaches a bending
 //    energy below that of the true surface's points clamped into the cells (a smooth
 //    configuration inside the same boxes), and below that of a descent from the staircase
 //    itself (`initial_smoothing_steps(0)`). Where the surface then sits inside the tall cells
-//    the energy does not say; the distance is printed, not tuned around;
+//    the energy does not say: the distance to the true surface (above) does;
 //  - on every grid, no regularized run finds a lower minimum: the bending energy is at most
 //    that of the accurate objective with fidelity weight 100 in the same cells, whose
 //    fidelity term pulls the descent away from where the plain fairing might stall;
@@ -23,7 +27,7 @@
 //    the mesh, or the reverse). The true surface clamped into the cells is printed as the
 //    reference.
 // Cases: a sphere of radius 10 voxels, and the bundled elephant (inside test by
-// CGAL::Side_of_triangle_mesh), 64 voxels along its longest side.
+// CGAL::Side_of_triangle_mesh), 64 voxels along its longest side, and 128 on thick slices.
 
 #include "test_support.h"
 
@@ -143,7 +147,9 @@ std::size_t misclassified_grid_points(const Mesh& m, const voxels::Grid& grid)
   return wrong;
 }
 
-void run(const Case& c, bool cubic, bool smooth_shape)
+// `gain`: the least factor by which the distance to the true surface must fall against the
+// staircase, 0 for none.
+void run(const Case& c, bool cubic, double gain)
 {
   Mesh staircase;
   CHECK(voxels::surface_nets(c.grid, staircase));
@@ -189,10 +195,10 @@ void run(const Case& c, bool cubic, bool smooth_shape)
   std::cout << "  grid points on the wrong side: staircase " << misclassified_grid_points(staircase, c.grid)
             << ", clamped Laplacian " << wrong_laplacian << ", constrained fairing " << wrong_faired
             << ", truth in the cells " << misclassified_grid_points(truth, c.grid) << std::endl;
+  if(gain > 0)
+    CHECK(rms_faired * gain <= rms_staircase);
   if(cubic)
   {
-    if(smooth_shape)
-      CHECK(rms_faired * 8 <= rms_staircase);
     CHECK(rms_faired < rms_laplacian);
     CHECK(energy_faired < energy_laplacian);
   }
@@ -225,11 +231,11 @@ Case sphere(std::array<double, 3> spacing)
               }};
 }
 
-// 64 voxels along the longest side, slices `spacing[2]` times thicker.
-Case elephant(const Mesh& shape, const Tree& tree, std::array<double, 3> spacing)
+// `voxels` voxels along the longest side, slices `spacing[2]` times thicker.
+Case elephant(const Mesh& shape, const Tree& tree, double voxels, std::array<double, 3> spacing)
 {
   const CGAL::Bbox_3 box = PMP::bbox(shape);
-  const double voxel = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / 64;
+  const double voxel = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / voxels;
   std::array<std::size_t, 3> size;
   std::array<double, 3> origin, step;
   for(int a = 0; a < 3; ++a)
@@ -240,20 +246,21 @@ Case elephant(const Mesh& shape, const Tree& tree, std::array<double, 3> spacing
   }
   const CGAL::Side_of_triangle_mesh<Mesh, test::K> side(tree);
   const auto inside = [&](double x, double y, double z) { return side(Point(x, y, z)) == CGAL::ON_BOUNDED_SIDE; };
-  return Case{"elephant, " + std::to_string(int(spacing[2])) + " x thick slices", voxels::Grid(size, step, origin, inside),
+  return Case{"elephant, " + std::to_string(int(voxels)) + " voxels, " + std::to_string(int(spacing[2])) + " x thick slices", voxels::Grid(size, step, origin, inside),
               [&tree](const Point& p) { return tree.closest_point(p); }};
 }
 
 int main()
 {
-  run(sphere({1, 1, 1}), true, true);
-  run(sphere({1, 1, 3}), false, true);
+  run(sphere({1, 1, 1}), true, 8);
+  run(sphere({1, 1, 3}), false, 3);
 
   Mesh shape;
   CHECK(CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/elephant.off", shape));
   Tree tree(faces(shape).first, faces(shape).second, shape);
   tree.accelerate_distance_queries();
-  run(elephant(shape, tree, {1, 1, 1}), true, false);
-  run(elephant(shape, tree, {1, 1, 3}), false, false);
+  run(elephant(shape, tree, 64, {1, 1, 1}), true, 0);
+  run(elephant(shape, tree, 64, {1, 1, 3}), false, 0);
+  run(elephant(shape, tree, 128, {1, 1, 3}), false, 3);
   return test::report("test_voxel_workflow");
 }
