@@ -83,9 +83,13 @@ int main(int argc, char* argv[])
   const double smallest_angle = benchmark::smallest_angle_deg(noisy);
   restore(noisy);
 
-  const double seconds = benchmark::median_seconds(runs, [&] {
+  // Both calls are timed without the restoring of the points.
+  const double seconds = benchmark::median_of(runs, [&] {
+    const auto start = std::chrono::steady_clock::now();
     r = PMP::constrained_fairing(noisy, eps);
+    const double call = benchmark::seconds_since(start);
     restore(noisy);
+    return call;
   });
   PMP::Constrained_fairing_result r_plain;
   double plain_smallest_angle = 0;
