@@ -11,7 +11,7 @@
 //    sphere is the bending energy's own minimizer, while on the elephant, whose curvature
 //    varies, the fairest surface in the cells departs from the true one: about 3x);
 //  - on 1 x 1 x 3 voxels the distance to the true surface falls at least 3x against the
-//    staircase on the sphere and on the elephant at 128 voxels (at 64 voxels the elephant's
+//    staircase on the sphere and on the elephant at 96 voxels (at 64 voxels the elephant's
 //    facets are only a few voxels wide, and the fairest surface rounds them: about 2.6x,
 //    printed);
 //  - on 1 x 1 x 3 voxels the fairing does not stall in the terraces: it reaches a bending
@@ -27,7 +27,7 @@
 //    the mesh, or the reverse). The true surface clamped into the cells is printed as the
 //    reference.
 // Cases: a sphere of radius 10 voxels, and the bundled elephant (inside test by
-// CGAL::Side_of_triangle_mesh), 64 voxels along its longest side, and 128 on thick slices.
+// CGAL::Side_of_triangle_mesh), 64 voxels along its longest side, and 96 on thick slices.
 
 #include "test_support.h"
 
@@ -261,6 +261,6 @@ int main()
   tree.accelerate_distance_queries();
   run(elephant(shape, tree, 64, {1, 1, 1}), true, 0);
   run(elephant(shape, tree, 64, {1, 1, 3}), false, 0);
-  run(elephant(shape, tree, 128, {1, 1, 3}), false, 3);
+  run(elephant(shape, tree, 96, {1, 1, 3}), false, 3);
   return test::report("test_voxel_workflow");
 }
