@@ -264,11 +264,11 @@ Case sphere(std::array<double, 3> spacing)
               }};
 }
 
-// `voxels` voxels along the longest side, slices `spacing[2]` times thicker.
-Case elephant(const Mesh& shape, const Tree& tree, double voxels, std::array<double, 3> spacing)
+// `length` voxels along the longest side, slices `spacing[2]` times thicker.
+Case elephant(const Mesh& shape, const Tree& tree, double length, std::array<double, 3> spacing)
 {
   const CGAL::Bbox_3 box = PMP::bbox(shape);
-  const double voxel = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / voxels;
+  const double voxel = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / length;
   std::array<std::size_t, 3> size;
   std::array<double, 3> origin, step;
   for(int a = 0; a < 3; ++a)
@@ -279,7 +279,7 @@ Case elephant(const Mesh& shape, const Tree& tree, double voxels, std::array<dou
   }
   const CGAL::Side_of_triangle_mesh<Mesh, test::K> side(tree);
   const auto inside = [&](double x, double y, double z) { return side(Point(x, y, z)) == CGAL::ON_BOUNDED_SIDE; };
-  return Case{"elephant, " + std::to_string(int(voxels)) + " voxels, " + std::to_string(int(spacing[2])) + " x thick slices", voxels::Grid(size, step, origin, inside),
+  return Case{"elephant, " + std::to_string(int(length)) + " voxels, " + std::to_string(int(spacing[2])) + " x thick slices", voxels::Grid(size, step, origin, inside),
               [&tree](const Point& p) { return tree.closest_point(p); }};
 }
 
