@@ -26,14 +26,14 @@ expect() {
 
 out=$work/faired.off
 expect "cannot read .*no_such_mesh.off" --eps 0.1 "$bad/no_such_mesh.off" "$out"
-expect "the mesh is empty" --eps 0.1 "$bad/empty.off" "$out"
+expect "empty.off: the mesh is empty" --eps 0.1 "$bad/empty.off" "$out"
 expect "the mesh is empty" --eps 0.1 "$bad/not_a_mesh.stl" "$out"
 expect "the mesh has no faces" --eps 0.1 "$bad/points_only.off" "$out"
 expect "edge between vertices 0 and 1 has 3 faces" --eps 0.1 "$bad/non_manifold_edge.off" "$out"
-expect "inconsistent orientation" --eps 0.1 "$bad/inconsistent_orientation.off" "$out"
-expect "non-manifold vertex" --eps 0.1 "$bad/non_manifold_vertex.off" "$out"
+expect "faces [0-9]* and [0-9]* are oriented inconsistently: both run from vertex" --eps 0.1 "$bad/inconsistent_orientation.off" "$out"
+expect "vertex [0-9]* is non-manifold: its faces form more than one fan" --eps 0.1 "$bad/non_manifold_vertex.off" "$out"
 expect "vertex 3 has a NaN or infinite coordinate" --eps 0.1 "$bad/nan.ply" "$out"
-expect "face 1 of .* refers to vertex 1852400130, but there are 4 vertices" --eps 0.1 "$bad/face_index_out_of_range.ply" "$out"
+expect "face_index_out_of_range.ply: face 1 refers to vertex 1852400130, but there are 4 vertices" --eps 0.1 "$bad/face_index_out_of_range.ply" "$out"
 expect "all triangles of the mesh have zero area" --eps 0.1 "$bad/zero_area.off" "$out"
 expect "unknown option --bogus" --bogus "$data/head.off" "$out"
 expect "box-extents must be three non-negative numbers" --box-extents 1,2 "$data/head.off" "$out"

@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Polygon_soup_check.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -79,7 +80,9 @@ options:
   --help                   this text
 )";
 
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Input_error;
 using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::polygon_soup_error;
 
 // "0.002" is absolute, "0.25h" is 0.25 times the mean edge length. Returns false if malformed.
 bool parse_epsilon(const std::string& text, const Mesh& mesh, double& epsilon)
@@ -126,36 +129,6 @@ private:
   std::streambuf* m_saved;
 };
 
-// Why a polygon soup that reads fine is no polygon mesh.
-std::string soup_defect(const std::vector<Polygon>& polygons)
-{
-  std::vector<std::array<std::size_t, 3> > edges; // (smaller, larger, direction) of each side
-  for(const Polygon& p : polygons)
-  {
-    if(p.size() < 3)
-      return "a face has fewer than 3 vertices";
-    for(std::size_t k = 0; k < p.size(); ++k)
-    {
-      const std::size_t a = p[k], b = p[(k + 1) % p.size()];
-      if(std::count(p.begin(), p.end(), a) > 1)
-        return "a face uses vertex " + std::to_string(a) + " twice";
-      edges.push_back({(std::min)(a, b), (std::max)(a, b), std::size_t(a < b)});
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  for(std::size_t i = 0, j = 0; i < edges.size(); i = j)
-  {
-    while(j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1])
-      ++j;
-    const std::string edge = "the edge between vertices " + std::to_string(edges[i][0]) + " and " + std::to_string(edges[i][1]);
-    if(j - i > 2)
-      return edge + " has " + std::to_string(j - i) + " faces (a non-manifold edge)";
-    if(j - i == 2 && edges[i][2] == edges[i + 1][2])
-      return "two faces run along " + edge + " in the same direction (inconsistent orientation)";
-  }
-  return "the faces around some vertex form more than one fan (a non-manifold vertex)";
-}
-
 // Reads a mesh from any format CGAL reads, its faces triangulated, `triangulated` of them.
 // Returns an empty string or the reason it failed.
 std::string read_mesh(const std::string& in, Mesh& mesh, std::size_t& triangulated)
@@ -165,13 +138,9 @@ std::string read_mesh(const std::string& in, Mesh& mesh, std::size_t& triangulat
   Captured_cerr cgal;
   if(!CGAL::IO::read_polygon_soup(in, points, polygons))
     return "cannot read " + in + " as an OFF, OBJ, PLY or STL mesh" + cgal.reason();
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t i : polygons[f])
-      if(i >= points.size())
-        return "face " + std::to_string(f) + " of " + in + " refers to vertex " + std::to_string(i) + ", but there are " +
-               std::to_string(points.size()) + " vertices";
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    return in + " is not a manifold, consistently oriented mesh: " + soup_defect(polygons);
+  const Input_error soup = polygon_soup_error(points.size(), polygons);
+  if(soup)
+    return in + ": " + soup.message;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   triangulated = static_cast<std::size_t>(
     std::count_if(polygons.begin(), polygons.end(), [](const Polygon& p) { return p.size() > 3; }));

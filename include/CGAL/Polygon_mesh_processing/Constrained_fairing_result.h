@@ -39,6 +39,10 @@ enum class Constrained_fairing_defect
   EMPTY_MESH,
   /// the mesh has no face
   NO_FACES,
+  /// a face of a polygon soup (a file the command-line tool reads, the arrays of the Python
+  /// module) has fewer than three vertices, or refers to a vertex that does not exist or to
+  /// one vertex twice; `constrained_fairing()` itself, given a halfedge mesh, never reports it
+  INVALID_FACE,
   /// the `next()`, `prev()`, `opposite()`, `target()` and `face()` links disagree
   BROKEN_STRUCTURE,
   /// a face is not a triangle

@@ -1,0 +1,38 @@
+"""Constrained fairing of triangle meshes: noise goes, every vertex stays within epsilon.
+
+The Python interface of CGAL Constrained Fairing, the implementation of K. Hildebrandt and
+K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy arrays:
+
+- `fair` fairs a mesh ``(vertices, faces)`` within a tolerance ``epsilon``;
+- `mean_edge_length` and `estimate_noise_level` help choose ``epsilon``;
+- `read_mesh` and `write_mesh` read and write OFF, OBJ, PLY and STL files;
+- `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files on a Dask cluster,
+  also from the command line: ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.
+
+Example
+-------
+>>> import cgal_constrained_fairing as cf
+>>> V, F = cf.read_mesh("scan.off")                         # doctest: +SKIP
+>>> W, report = cf.fair(V, F, 0.25 * cf.mean_edge_length(V, F))  # doctest: +SKIP
+>>> print(report)                                           # doctest: +SKIP
+"""
+
+from ._errors import Defect, InputError
+from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length, set_max_threads
+from ._io import read_mesh, write_mesh
+from ._report import Report, Status
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Defect", "InputError", "Report", "Status", "estimate_noise_level", "fair", "fair_files",
+    "max_threads", "mean_edge_length", "read_mesh", "set_max_threads", "write_mesh",
+]
+
+
+def __getattr__(name):
+    # The batch needs Dask, imported only when it is used.
+    if name == "fair_files":
+        from .batch import fair_files
+        return fair_files
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

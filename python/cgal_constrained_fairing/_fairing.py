@@ -1,0 +1,337 @@
+"""`fair` and the measures of a mesh, on numpy arrays."""
+
+import sys
+import time
+from typing import Callable, Optional, Tuple, Union
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from . import _core
+from ._arrays import (choice_argument, count_argument, faces_array, indices_array, invalid,
+                      number_argument, numbers_array, selection_array, vertices_array)
+from ._errors import Defect, InputError
+from ._report import Report, Status
+
+_METHODS = ("quasi_newton", "active_set_newton", "projected_gradient")
+_UINT_MAX = 2**32 - 1
+
+Progress = Union[None, bool, Callable[[int, float], Optional[bool]]]
+
+
+def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
+         bound: Optional[str] = None,
+         box_half_extents: Optional[ArrayLike] = None,
+         box_centers: Optional[ArrayLike] = None,
+         tolerance: Optional[ArrayLike] = None,
+         fixed: Optional[ArrayLike] = None,
+         region: Optional[ArrayLike] = None,
+         objective: str = "fairest",
+         fidelity_weight: Optional[float] = None,
+         method: Optional[str] = None,
+         max_iterations: Optional[int] = None,
+         energy_decrease_threshold: Optional[float] = None,
+         sliver_barrier_weight: Optional[float] = None,
+         initial_smoothing_steps: Optional[int] = None,
+         conjugate_gradient_iterations: Optional[int] = None,
+         progress: Progress = None) -> Tuple[np.ndarray, Report]:
+    """Fair a triangle mesh: remove its noise while every vertex stays within `epsilon`.
+
+    Minimizes the discrete bending energy of the mesh (Hildebrandt and Polthier, "Constraint-based
+    fairing of surface meshes", SGP 2007) over all vertex positions ``p`` with
+    ``|p - p0| <= epsilon``, ``p0`` the input position. Set `epsilon` to the accuracy of the data
+    (a scanner's precision, the voxel size of an isosurface): noise and terracing go, that accuracy
+    stays. The connectivity does not change. This is ``CGAL::Polygon_mesh_processing::
+    constrained_fairing()``, called on the ``CGAL::Surface_mesh`` that a C++ program builds from
+    the same arrays: the result is bit-identical to that call's, and to the command-line tool's.
+
+    The bound holds exactly in double precision, with no tolerance::
+
+        np.linalg.norm(new_vertices - vertices, axis=1) <= epsilon   # all True
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        The vertex positions, of any floating-point dtype (computed in float64). A float64
+        C-contiguous array is read without a copy. Never modified.
+    faces : array_like, shape (m, 3)
+        The triangles, as indices into `vertices` (any integer dtype). The mesh must be manifold
+        and consistently oriented; it may have borders and isolated vertices (which stay).
+    epsilon : float
+        The largest distance a vertex may move, in the units of `vertices`; it caps every other
+        size below. ``mean_edge_length(vertices, faces)`` gives a scale (a quarter of it is a
+        good start for noise) and ``estimate_noise_level(vertices, faces)`` estimates it.
+    bound : {None, "ball", "box"}
+        The set each vertex stays in: ``"ball"``, the ball of radius `epsilon` (what "within
+        epsilon" means), or ``"box"``, the cube of half-side `epsilon` of the paper (each
+        coordinate within `epsilon`). Default: ``"box"`` if `box_half_extents` or `box_centers`
+        is given, ``"ball"`` otherwise. ``"ball"`` with box arrays raises (``BOX_WITH_BALL``).
+    box_half_extents : array_like, shape (3,) or (n, 3), optional
+        The half-extents of the box along x, y and z, for every vertex or for each one (a voxel's
+        half size, for surfaces extracted from volumes), each capped by the vertex's tolerance.
+    box_centers : array_like, shape (n, 3), optional
+        Each vertex's box centre (its voxel cell), instead of its input position; each input
+        position must lie in its box (``OUTSIDE_BOX`` otherwise).
+    tolerance : array_like, shape (n,), optional
+        Each vertex's own tolerance (a scanner's per-point accuracy), capped by `epsilon`; ``0``
+        pins the vertex.
+    fixed : array_like, optional
+        The vertices that must not move: a boolean mask of shape ``(n,)``, or an array of
+        vertex indices. Their coordinates come out bit-identical.
+    region : array_like, optional
+        Fair only these faces (a boolean mask of shape ``(m,)`` or face indices, each listed
+        once): only vertices whose faces all lie in the region move, so its border stays.
+    objective : {"fairest", "accurate"}
+        ``"fairest"`` minimizes the bending energy alone: the fairest surface within the bound.
+        ``"accurate"`` adds a fidelity term towards a denoised copy of the input: closer to the
+        true surface of a noisy scan, a little less fair. Not for surfaces extracted from
+        volumes.
+    fidelity_weight : float, optional
+        The weight of the fidelity term of ``objective="accurate"`` (default 10000); larger keeps
+        nearer the denoised input, ``0`` is the fairest objective.
+    method : {None, "quasi_newton", "active_set_newton", "projected_gradient"}
+        The optimization method: the default projected quasi-Newton method, or the paper's
+        active set Newton method and its explicit projected gradient method.
+    max_iterations : int, optional
+        The largest number of iterations (default 1000 for the default method, 200 for the
+        paper's); ``0`` returns the input positions.
+    energy_decrease_threshold : float, optional
+        Stop when the relative energy decrease per iteration falls below this (averaged over 50
+        iterations for the default method; default 1.25e-4, and 1e-3 for the paper's methods);
+        ``0`` runs all `max_iterations`.
+    sliver_barrier_weight : float, optional
+        The weight of the barrier against slivers (default 1, per triangle); ``0`` minimizes the
+        paper's energy alone, which leaves needle-shaped triangles.
+    initial_smoothing_steps : int, optional
+        Steps of bounded Taubin smoothing that make the starting point (default 16 for the
+        default method, 0 for the paper's methods).
+    conjugate_gradient_iterations : int, optional
+        Conjugate gradient iterations per Newton step (``"active_set_newton"`` only, default 1).
+    progress : None, True or callable, optional
+        ``progress(iteration, energy)`` is called after each iteration, with the iteration's
+        number (from 1) and the objective reached; returning ``False`` stops the run, and the
+        result is that iterate (status ``CANCELLED``). An exception it raises stops the run and
+        is raised. ``True`` shows a progress bar (tqdm, when installed; a line on stderr
+        otherwise).
+
+    Returns
+    -------
+    new_vertices : numpy.ndarray
+        ``(n, 3)`` float64, a new array: the faired positions.
+    report : Report
+        What was done: status, iterations, energies before and after, the largest deviation,
+        the vertices at their bound, the folds, and each vertex's ``deviation`` and ``at_bound``.
+
+    Raises
+    ------
+    InputError
+        (a ValueError) The input was rejected: ``error.defect`` names the kind (`Defect`) and
+        the message the first vertex or face concerned. Wrong shapes or dtypes, face indices out
+        of range, non-manifold or inconsistently oriented meshes, NaN or infinite coordinates,
+        ``epsilon <= 0``, bad weights, tolerances or boxes.
+    RuntimeError
+        The sparse linear solver failed (``method="active_set_newton"`` only).
+    KeyboardInterrupt
+        Ctrl-C during the run, which stops within a fraction of a second.
+
+    Notes
+    -----
+    The GIL is released during the computation, so calls from several threads run at once; the
+    library's loops also run in parallel with TBB (`set_max_threads` limits them), with results
+    bit-identical for any number of threads.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import cgal_constrained_fairing as cf
+    >>> V, F = cf.read_mesh("scan.ply")                                # doctest: +SKIP
+    >>> eps = 0.25 * cf.mean_edge_length(V, F)                        # doctest: +SKIP
+    >>> W, report = cf.fair(V, F, eps)                                # doctest: +SKIP
+    >>> bool((np.linalg.norm(W - V, axis=1) <= eps).all())            # doctest: +SKIP
+    True
+    """
+    V = vertices_array(vertices)
+    n = V.shape[0]
+    F = faces_array(faces, n)
+    options = _core.Options()
+    options.epsilon = number_argument(epsilon, "epsilon", Defect.INVALID_EPSILON)
+    options.bound = "" if bound is None else choice_argument(bound, "bound", ("ball", "box"))
+    options.objective = getattr(_core.Objective, choice_argument(
+        objective, "objective", ("fairest", "accurate")).upper())
+    if method is not None:
+        options.method = getattr(_core.Method, choice_argument(method, "method", _METHODS).upper())
+    if fidelity_weight is not None:
+        options.fidelity_weight = number_argument(fidelity_weight, "fidelity_weight",
+                                                  Defect.INVALID_FIDELITY_WEIGHT)
+    if sliver_barrier_weight is not None:
+        options.sliver_barrier_weight = number_argument(
+            sliver_barrier_weight, "sliver_barrier_weight", Defect.INVALID_SLIVER_BARRIER_WEIGHT)
+    if energy_decrease_threshold is not None:
+        threshold = number_argument(energy_decrease_threshold, "energy_decrease_threshold")
+        if not threshold >= 0:
+            raise invalid(f"energy_decrease_threshold must be non-negative (got {threshold})")
+        options.energy_decrease_threshold = threshold
+    if max_iterations is not None:
+        options.max_iterations = count_argument(max_iterations, "max_iterations", _UINT_MAX)
+    if initial_smoothing_steps is not None:
+        options.initial_smoothing_steps = count_argument(initial_smoothing_steps,
+                                                         "initial_smoothing_steps")
+    if conjugate_gradient_iterations is not None:
+        options.conjugate_gradient_iterations = count_argument(conjugate_gradient_iterations,
+                                                               "conjugate_gradient_iterations")
+
+    if tolerance is not None:
+        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
+    if fixed is not None:
+        fixed = selection_array(fixed, "fixed", n, "vertex")
+    if box_half_extents is not None:
+        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
+        if box_half_extents.shape == (3,):
+            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
+    if box_centers is not None:
+        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
+    if region is not None:
+        region = _region_indices(region, F.shape[0])
+
+    with _Progress(progress, options) as callback:
+        outcome = _core.fair(V, F, options, tolerance, fixed, box_half_extents, box_centers,
+                             region, callback)
+    status = outcome["status"].name
+    if status == "INVALID_INPUT":
+        raise InputError(outcome["defect"].name, outcome["message"])
+    if status == "LINEAR_SOLVER_FAILED":
+        raise RuntimeError(outcome["message"])
+    fields = {name: outcome[name] for name in Report.__dataclass_fields__}
+    fields["status"] = Status(status)
+    fields["defect"] = Defect.NONE
+    return outcome["vertices"], Report(**fields)
+
+
+def _region_indices(region, m):
+    A = np.asarray(region)
+    if A.dtype.kind == "b":
+        return np.flatnonzero(selection_array(A, "region", m, "face")).astype(np.int64)
+    return indices_array(A, "region", m, "face")
+
+
+class _Progress:
+    """The callback that `fair` hands to the library for its `progress` argument."""
+
+    def __init__(self, progress, options):
+        self._progress = progress
+        self._total = (options.max_iterations if options.max_iterations is not None
+                       else _core.default_max_iterations(options.method))
+        self._bar = None
+        self._shown = 0.0
+
+    def __enter__(self):
+        if self._progress is None or self._progress is False:
+            return None
+        if callable(self._progress):
+            return self._progress
+        if self._progress is not True:
+            raise invalid(f"progress must be None, True or a callable (got {self._progress!r})")
+        try:
+            from tqdm import tqdm
+        except ImportError:
+            return self._line
+        self._bar = tqdm(total=self._total, desc="fairing", unit="it", leave=False)
+        return self._tick
+
+    def __exit__(self, *exc):
+        if self._bar is not None:
+            self._bar.close()
+        elif self._shown:
+            sys.stderr.write("\r\x1b[K")
+            sys.stderr.flush()
+        return False
+
+    def _tick(self, iteration, energy):
+        self._bar.update(iteration - self._bar.n)
+        self._bar.set_postfix_str(f"energy {energy:.6g}", refresh=False)
+
+    def _line(self, iteration, energy):
+        now = time.monotonic()
+        if now - self._shown >= 0.5:
+            self._shown = now
+            sys.stderr.write(f"\rfairing: iteration {iteration}, energy {energy:.6g}\x1b[K")
+            sys.stderr.flush()
+
+
+def _measure(measure, vertices, faces):
+    V = vertices_array(vertices)
+    F = faces_array(faces, V.shape[0])
+    value, defect, message = measure(V, F)
+    if defect.name != "NONE":
+        raise InputError(defect.name, message)
+    return value
+
+
+def mean_edge_length(vertices: ArrayLike, faces: ArrayLike) -> float:
+    """The mean edge length ``h`` of a triangle mesh: the unit of relative tolerances.
+
+    The command-line tool's ``--eps 0.25h`` is ``0.25 * mean_edge_length(V, F)``, bit for bit.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        Vertex positions, any floating-point dtype.
+    faces : array_like, shape (m, 3)
+        Triangles as vertex indices, any integer dtype; manifold and consistently oriented.
+
+    Returns
+    -------
+    float
+        The mean length of the mesh's edges, each counted once.
+
+    Raises
+    ------
+    InputError
+        As `fair`, for the arrays and the mesh they make.
+    """
+    return _measure(_core.mean_edge_length, vertices, faces)
+
+
+def estimate_noise_level(vertices: ArrayLike, faces: ArrayLike) -> float:
+    """Estimate the noise level of a triangle mesh, a value for `fair`'s `epsilon`.
+
+    The radius ``r`` of noise uniform in a ball that would give the mesh's roughness, measured
+    by the deviation of each vertex from a cubic fitted to its two rings of neighbours
+    (``CGAL::Polygon_mesh_processing::estimate_noise_level()``; the command-line tool's
+    ``--eps auto``). Meant for scans; on meshes of fewer than a few hundred vertices it may be 0.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        Vertex positions, any floating-point dtype.
+    faces : array_like, shape (m, 3)
+        Triangles as vertex indices, any integer dtype; manifold and consistently oriented.
+
+    Returns
+    -------
+    float
+        The estimated noise radius, in the units of `vertices`.
+
+    Raises
+    ------
+    InputError
+        As `fair`, for the arrays and the mesh they make.
+    """
+    return _measure(_core.estimate_noise_level, vertices, faces)
+
+
+def set_max_threads(threads: int) -> None:
+    """Limit the threads of the library's parallel loops (TBB) in this process.
+
+    Parameters
+    ----------
+    threads : int
+        The largest number of threads; ``0`` lifts the limit (all cores). Results are
+        bit-identical for any number of threads.
+    """
+    _core.set_max_threads(count_argument(threads, "threads"))
+
+
+def max_threads() -> int:
+    """The largest number of threads the library's parallel loops use (1 without TBB)."""
+    return _core.max_threads()

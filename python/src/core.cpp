@@ -1,0 +1,558 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The compiled part of the Python package cgal_constrained_fairing: constrained_fairing() and
+// the noise estimate on numpy arrays, and CGAL's mesh readers and writers. The arrays arrive
+// checked for shape and converted to their dtype by the pure-Python layer (_fairing.py); here
+// they become the CGAL::Surface_mesh that a C++ program makes of the same points and triangles
+// (polygon_soup_to_polygon_mesh), so that the result is bit-identical to the C++ call's.
+// The computation runs without the GIL; the GIL is taken back only to call the Python
+// progress callback and, every fifth of a second, to let Ctrl-C through.
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Polygon_soup_check.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+namespace CF = PMP::internal::Constrained_fairing;
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using vertex_descriptor = Mesh::Vertex_index;
+using face_descriptor = Mesh::Face_index;
+
+using Float_array = py::array_t<double, py::array::c_style>;
+using Index_array = py::array_t<std::int64_t, py::array::c_style>;
+using Mask_array = py::array_t<bool, py::array::c_style>;
+using Triangle = std::array<std::size_t, 3>;
+
+// A read-only property map over the rows of a C-contiguous array of `Columns` numbers per
+// vertex, vertex i of the mesh being row i: the per-vertex data of the named parameters.
+template <typename Value, int Columns>
+struct Row_map
+{
+  using key_type = vertex_descriptor;
+  using value_type = Value;
+  using reference = Value;
+  using category = boost::readable_property_map_tag;
+
+  const double* data = nullptr;
+
+  friend Value get(const Row_map& map, vertex_descriptor v)
+  {
+    const double* row = map.data + std::size_t(v.idx()) * Columns;
+    if constexpr(Columns == 1)
+      return row[0];
+    else if constexpr(std::is_same_v<Value, Point>)
+      return Point(row[0], row[1], row[2]);
+    else
+      return Value{row[0], row[1], row[2]};
+  }
+};
+
+// A property map over an array of one value per vertex, read (the fixed vertices) or written
+// (the deviations and the vertices at their bound).
+template <typename Value>
+struct Array_map
+{
+  using key_type = vertex_descriptor;
+  using value_type = Value;
+  using reference = Value&;
+  using category = boost::read_write_property_map_tag;
+
+  Value* data = nullptr;
+
+  friend Value get(const Array_map& map, vertex_descriptor v) { return map.data[std::size_t(v.idx())]; }
+  friend void put(const Array_map& map, vertex_descriptor v, const Value& value) { map.data[std::size_t(v.idx())] = value; }
+};
+
+// The vertices that must not move, from an array of bool.
+struct Mask_map
+{
+  using key_type = vertex_descriptor;
+  using value_type = bool;
+  using reference = bool;
+  using category = boost::readable_property_map_tag;
+
+  const bool* data = nullptr;
+
+  friend bool get(const Mask_map& map, vertex_descriptor v) { return map.data[std::size_t(v.idx())]; }
+};
+
+// Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the checks of
+// Polygon_soup_check.h; returns the first defect found, and leaves `mesh` empty then.
+CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces, Mesh& mesh)
+{
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
+  const std::int64_t* f = faces.data();
+  std::vector<Triangle> triangles(m);
+  for(std::size_t i = 0; i < m; ++i)
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const std::int64_t v = f[3 * i + c];
+      if(v < 0)
+        return {PMP::Constrained_fairing_defect::INVALID_FACE, "face " + std::to_string(i) + " refers to vertex " +
+                                                                 std::to_string(v) + ", but there are " +
+                                                                 std::to_string(n) + " vertices"};
+      triangles[i][c] = static_cast<std::size_t>(v);
+    }
+  if(CF::Input_error error = CF::polygon_soup_error(n, triangles))
+    return error;
+  std::vector<Point> points;
+  points.reserve(n);
+  const double* p = vertices.data();
+  for(std::size_t i = 0; i < n; ++i)
+    points.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  return {};
+}
+
+// `measure(mesh)` on the mesh of the arrays, as (value, defect, message): NaN and the first
+// defect of the arrays, or the value and no defect.
+template <typename Measure>
+py::tuple measure_mesh(const Float_array& vertices, const Index_array& faces, const Measure& measure)
+{
+  CF::Input_error error;
+  double value = std::numeric_limits<double>::quiet_NaN();
+  {
+    py::gil_scoped_release release;
+    Mesh mesh;
+    error = build_mesh(vertices, faces, mesh);
+    if(!error)
+      value = measure(mesh);
+  }
+  return py::make_tuple(value, error.defect, error.message);
+}
+
+// The iteration callback: the user's progress callback under the GIL, and Ctrl-C. Whatever
+// Python raised stops the run and is kept for the caller to raise once the GIL is back.
+class Python_callback
+{
+public:
+  explicit Python_callback(py::object progress) : m_progress(std::move(progress)), m_last_check(clock::now()) {}
+
+  bool operator()(std::size_t iteration, double energy)
+  {
+    const bool call = !m_progress.is_none();
+    const auto now = clock::now();
+    if(!call && now - m_last_check < std::chrono::milliseconds(200))
+      return true;
+    m_last_check = now;
+    py::gil_scoped_acquire gil;
+    try
+    {
+      if(PyErr_CheckSignals() != 0)
+        throw py::error_already_set();
+      return !(call && m_progress(iteration, energy).is(py::bool_(false)));
+    }
+    catch(py::error_already_set& e)
+    {
+      m_error = std::make_unique<py::error_already_set>(std::move(e));
+      return false;
+    }
+  }
+
+  // Raises what Python raised during the run, if anything; called with the GIL held.
+  void raise_pending()
+  {
+    if(m_error)
+    {
+      py::error_already_set error = std::move(*m_error);
+      m_error.reset();
+      throw error;
+    }
+  }
+
+private:
+  using clock = std::chrono::steady_clock;
+  py::object m_progress;
+  clock::time_point m_last_check;
+  std::unique_ptr<py::error_already_set> m_error;
+};
+
+// The options of a call, each unset one taking the library's default.
+struct Options
+{
+  double epsilon = 0;
+  std::string bound; // "ball", "box", or empty: the box if box arrays are given, as in C++
+  PMP::Constrained_fairing_method method = PMP::Constrained_fairing_method::QUASI_NEWTON;
+  PMP::Constrained_fairing_objective objective = PMP::Constrained_fairing_objective::FAIREST;
+  std::optional<double> fidelity_weight, sliver_barrier_weight, energy_decrease_threshold;
+  std::optional<std::size_t> max_iterations, initial_smoothing_steps, conjugate_gradient_iterations;
+};
+
+template <typename NamedParameters>
+PMP::Constrained_fairing_result call_library(const std::vector<face_descriptor>* region, Mesh& mesh, double epsilon,
+                                             const NamedParameters& np)
+{
+  return region ? PMP::constrained_fairing(*region, mesh, epsilon, np) : PMP::constrained_fairing(mesh, epsilon, np);
+}
+
+// constrained_fairing() on the arrays, which the Python layer has checked for shape (every
+// per-vertex array has a row per vertex, the region's faces are distinct and exist). Every
+// per-vertex map is given, filled with what the call without it would use where the user gave
+// none (epsilon, no fixed vertex, the input positions as box centres): the result is the same,
+// bit for bit, with one compiled pipeline per bound shape.
+py::dict fair(const Float_array& vertices, const Index_array& faces, const Options& options,
+              const std::optional<Float_array>& tolerance, const std::optional<Mask_array>& fixed,
+              const std::optional<Float_array>& box_half_extents, const std::optional<Float_array>& box_centers,
+              const std::optional<Index_array>& region, py::object progress)
+{
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
+  const bool box_arrays = box_half_extents || box_centers;
+  const bool box = options.bound == "box" || (options.bound.empty() && box_arrays);
+  Python_callback callback(std::move(progress));
+  py::array_t<double> deviation(static_cast<py::ssize_t>(n));
+  Mask_array at_bound(static_cast<py::ssize_t>(n));
+  Float_array out({static_cast<py::ssize_t>(n), py::ssize_t(3)});
+  double* deviation_data = deviation.mutable_data();
+  bool* at_bound_data = at_bound.mutable_data();
+  double* out_data = out.mutable_data();
+  PMP::Constrained_fairing_result result;
+  {
+    py::gil_scoped_release release;
+    std::vector<double> epsilons;
+    std::unique_ptr<bool[]> none_fixed;
+    const double* tolerance_data = tolerance ? tolerance->data() : nullptr;
+    if(!tolerance)
+    {
+      epsilons.assign(n, options.epsilon);
+      tolerance_data = epsilons.data();
+    }
+    if(!fixed)
+      none_fixed.reset(new bool[n]());
+    // Without half-extents, the box is the tolerance's cube, as epsilon's per axis gives.
+    std::vector<double> cube;
+    const double* extents_data = box_half_extents ? box_half_extents->data() : nullptr;
+    if(!box_half_extents)
+    {
+      cube.assign(3 * n, options.epsilon);
+      extents_data = cube.data();
+    }
+    Mesh mesh;
+    if(const CF::Input_error error = build_mesh(vertices, faces, mesh))
+    {
+      result.status = PMP::Constrained_fairing_status::INVALID_INPUT;
+      result.defect = error.defect;
+      result.message = error.message;
+    }
+    else
+    {
+      std::vector<face_descriptor> region_faces;
+      if(region)
+        for(py::ssize_t k = 0; k < region->shape(0); ++k)
+          region_faces.push_back(face_descriptor(static_cast<Mesh::size_type>(region->data()[k])));
+      const CF::Solver_options defaults = CF::default_options(options.method);
+      const unsigned int iterations = static_cast<unsigned int>(options.max_iterations.value_or(defaults.max_iterations));
+      // The named parameters, built from the innermost; each holds a copy of the pack it extends.
+      const auto counts = CFP::conjugate_gradient_iterations(
+        options.conjugate_gradient_iterations.value_or(defaults.cg_iterations),
+        CFP::iteration_callback(std::ref(callback),
+                                CGAL::parameters::number_of_iterations(iterations).vertex_is_constrained_map(
+                                  Mask_map{fixed ? fixed->data() : none_fixed.get()})));
+      const auto stopping = CFP::energy_decrease_threshold(
+        options.energy_decrease_threshold.value_or(defaults.threshold),
+        CFP::initial_smoothing_steps(options.initial_smoothing_steps.value_or(defaults.smoothing_steps), counts));
+      const auto objective = CFP::fairing_method(
+        options.method,
+        CFP::fairing_objective(
+          options.objective,
+          CFP::fidelity_weight(options.fidelity_weight.value_or(CF::default_fidelity_weight),
+                               CFP::sliver_barrier_weight(
+                                 options.sliver_barrier_weight.value_or(CF::default_sliver_barrier_weight), stopping))));
+      const auto np = CFP::vertex_tolerance_map(
+        Row_map<double, 1>{tolerance_data},
+        CFP::vertex_deviation_map(Array_map<double>{deviation_data},
+                                  CFP::vertex_at_bound_map(Array_map<bool>{at_bound_data}, objective)));
+      const std::vector<face_descriptor>* faces_to_fair = region ? &region_faces : nullptr;
+      // The box pipeline also serves the ball asked for with box arrays: the library then
+      // reports BOX_WITH_BALL.
+      if(box || box_arrays)
+        result = call_library(
+          faces_to_fair, mesh, options.epsilon,
+          CFP::deviation_bound(box ? PMP::Deviation_bound::BOX : PMP::Deviation_bound::BALL,
+                               CFP::vertex_box_half_extents_map(
+                                 Row_map<std::array<double, 3>, 3>{extents_data},
+                                 CFP::vertex_box_center_map(
+                                   Row_map<Point, 3>{box_centers ? box_centers->data() : vertices.data()}, np))));
+      else
+        result = call_library(faces_to_fair, mesh, options.epsilon, np);
+      for(vertex_descriptor v : mesh.vertices())
+      {
+        const Point& q = mesh.point(v);
+        double* row = out_data + 3 * std::size_t(v.idx());
+        row[0] = q.x();
+        row[1] = q.y();
+        row[2] = q.z();
+      }
+    }
+  }
+  callback.raise_pending();
+
+  py::dict report;
+  report["status"] = result.status;
+  report["message"] = result.message;
+  report["defect"] = result.defect;
+  report["number_of_iterations"] = result.number_of_iterations;
+  report["number_of_cg_iterations"] = result.number_of_cg_iterations;
+  report["number_of_energy_evaluations"] = result.number_of_energy_evaluations;
+  report["initial_energy"] = result.initial_energy;
+  report["final_energy"] = result.final_energy;
+  report["final_bending_energy"] = result.final_bending_energy;
+  report["max_deviation"] = result.max_deviation;
+  report["number_of_vertices_at_bound"] = result.number_of_vertices_at_bound;
+  report["number_of_fixed_vertices"] = result.number_of_fixed_vertices;
+  report["number_of_folded_faces"] = result.number_of_folded_faces;
+  report["number_of_unfolded_faces"] = result.number_of_unfolded_faces;
+  report["number_of_degenerate_edges"] = result.number_of_degenerate_edges;
+  if(result)
+  {
+    report["vertices"] = out;
+    report["deviation"] = deviation;
+    report["at_bound"] = at_bound;
+  }
+  return report;
+}
+
+// CGAL's words on std::cerr, caught for an error message.
+class Captured_cerr
+{
+public:
+  Captured_cerr() : m_saved(std::cerr.rdbuf(m_text.rdbuf())) {}
+  ~Captured_cerr() { std::cerr.rdbuf(m_saved); }
+  std::string reason() const
+  {
+    std::string text = m_text.str();
+    for(char& c : text)
+      if(c == '\n')
+        c = ' ';
+    while(!text.empty() && text.back() == ' ')
+      text.pop_back();
+    return text.empty() ? text : " (" + text + ")";
+  }
+
+private:
+  std::ostringstream m_text;
+  std::streambuf* m_saved;
+};
+
+// Reads a polygon soup with CGAL's readers (OFF, OBJ, PLY, STL, by the file's extension); faces
+// of more than three vertices are triangulated as the command-line tool does.
+py::tuple read_mesh(const std::string& path)
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  std::string error;
+  Mesh mesh;
+  bool triangles = true;
+  {
+    py::gil_scoped_release release;
+    Captured_cerr cgal;
+    if(!CGAL::IO::read_polygon_soup(path, points, polygons))
+      error = "cannot read " + path + " as an OFF, OBJ, PLY or STL mesh" + cgal.reason();
+    for(const auto& polygon : polygons)
+      triangles = triangles && polygon.size() == 3;
+    if(error.empty() && !triangles)
+    {
+      if(const CF::Input_error soup = CF::polygon_soup_error(points.size(), polygons))
+        error = path + ": " + soup.message;
+      else
+      {
+        PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+        if(!PMP::triangulate_faces(mesh))
+          error = "cannot triangulate the faces of " + path + " with more than three vertices";
+      }
+    }
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+  if(!triangles)
+  {
+    points.assign(mesh.points().begin(), mesh.points().end());
+    polygons.clear();
+    for(face_descriptor f : faces(mesh))
+    {
+      polygons.emplace_back();
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))
+        polygons.back().push_back(std::size_t(v.idx()));
+    }
+  }
+  Float_array V({static_cast<py::ssize_t>(points.size()), py::ssize_t(3)});
+  Index_array F({static_cast<py::ssize_t>(polygons.size()), py::ssize_t(3)});
+  double* v = V.mutable_data();
+  for(const Point& p : points)
+  {
+    *v++ = p.x();
+    *v++ = p.y();
+    *v++ = p.z();
+  }
+  std::int64_t* f = F.mutable_data();
+  for(const auto& polygon : polygons)
+    for(std::size_t c = 0; c < 3; ++c)
+      *f++ = static_cast<std::int64_t>(polygon[c]);
+  return py::make_tuple(V, F);
+}
+
+void write_mesh(const std::string& path, const Float_array& vertices, const Index_array& faces)
+{
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    std::vector<Point> points;
+    points.reserve(n);
+    for(std::size_t i = 0; i < n; ++i)
+      points.emplace_back(vertices.data()[3 * i], vertices.data()[3 * i + 1], vertices.data()[3 * i + 2]);
+    std::vector<Triangle> triangles(m);
+    for(std::size_t i = 0; i < m; ++i)
+      for(std::size_t c = 0; c < 3; ++c)
+        triangles[i][c] = static_cast<std::size_t>(faces.data()[3 * i + c]);
+    Captured_cerr cgal;
+    if(!CGAL::IO::write_polygon_soup(path, points, triangles, CGAL::parameters::stream_precision(17)))
+      error = "cannot write " + path + cgal.reason();
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+}
+
+std::size_t max_threads()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return static_cast<std::size_t>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+#else
+  return 1;
+#endif
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+std::unique_ptr<tbb::global_control> thread_limit;
+#endif
+
+void set_max_threads(std::size_t threads)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  thread_limit.reset();
+  if(threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+#else
+  (void)threads;
+#endif
+}
+
+} // namespace
+
+PYBIND11_MODULE(_core, m)
+{
+  m.doc() = "The compiled part of cgal_constrained_fairing; call the functions of the package instead.";
+
+  py::enum_<PMP::Constrained_fairing_status>(m, "Status")
+    .value("CONVERGED", PMP::Constrained_fairing_status::CONVERGED)
+    .value("ITERATION_LIMIT_REACHED", PMP::Constrained_fairing_status::ITERATION_LIMIT_REACHED)
+    .value("CANCELLED", PMP::Constrained_fairing_status::CANCELLED)
+    .value("INVALID_INPUT", PMP::Constrained_fairing_status::INVALID_INPUT)
+    .value("LINEAR_SOLVER_FAILED", PMP::Constrained_fairing_status::LINEAR_SOLVER_FAILED);
+  using D = PMP::Constrained_fairing_defect;
+  py::enum_<D>(m, "Defect")
+    .value("NONE", D::NONE)
+    .value("EMPTY_MESH", D::EMPTY_MESH)
+    .value("NO_FACES", D::NO_FACES)
+    .value("INVALID_FACE", D::INVALID_FACE)
+    .value("BROKEN_STRUCTURE", D::BROKEN_STRUCTURE)
+    .value("NOT_TRIANGLE", D::NOT_TRIANGLE)
+    .value("NON_MANIFOLD_EDGE", D::NON_MANIFOLD_EDGE)
+    .value("INCONSISTENT_ORIENTATION", D::INCONSISTENT_ORIENTATION)
+    .value("NON_MANIFOLD_VERTEX", D::NON_MANIFOLD_VERTEX)
+    .value("MESH_TOO_LARGE", D::MESH_TOO_LARGE)
+    .value("NON_FINITE_COORDINATE", D::NON_FINITE_COORDINATE)
+    .value("INVALID_EPSILON", D::INVALID_EPSILON)
+    .value("INVALID_FIDELITY_WEIGHT", D::INVALID_FIDELITY_WEIGHT)
+    .value("INVALID_SLIVER_BARRIER_WEIGHT", D::INVALID_SLIVER_BARRIER_WEIGHT)
+    .value("BOX_WITH_BALL", D::BOX_WITH_BALL)
+    .value("INVALID_BOX_EXTENTS", D::INVALID_BOX_EXTENTS)
+    .value("INVALID_TOLERANCE", D::INVALID_TOLERANCE)
+    .value("INVALID_BOX_CENTER", D::INVALID_BOX_CENTER)
+    .value("OUTSIDE_BOX", D::OUTSIDE_BOX)
+    .value("NO_AREA", D::NO_AREA);
+  py::enum_<PMP::Constrained_fairing_method>(m, "Method")
+    .value("QUASI_NEWTON", PMP::Constrained_fairing_method::QUASI_NEWTON)
+    .value("ACTIVE_SET_NEWTON", PMP::Constrained_fairing_method::ACTIVE_SET_NEWTON)
+    .value("PROJECTED_GRADIENT", PMP::Constrained_fairing_method::PROJECTED_GRADIENT);
+  py::enum_<PMP::Constrained_fairing_objective>(m, "Objective")
+    .value("FAIREST", PMP::Constrained_fairing_objective::FAIREST)
+    .value("ACCURATE", PMP::Constrained_fairing_objective::ACCURATE);
+
+  py::class_<Options>(m, "Options")
+    .def(py::init<>())
+    .def_readwrite("epsilon", &Options::epsilon)
+    .def_readwrite("bound", &Options::bound)
+    .def_readwrite("method", &Options::method)
+    .def_readwrite("objective", &Options::objective)
+    .def_readwrite("fidelity_weight", &Options::fidelity_weight)
+    .def_readwrite("sliver_barrier_weight", &Options::sliver_barrier_weight)
+    .def_readwrite("energy_decrease_threshold", &Options::energy_decrease_threshold)
+    .def_readwrite("max_iterations", &Options::max_iterations)
+    .def_readwrite("initial_smoothing_steps", &Options::initial_smoothing_steps)
+    .def_readwrite("conjugate_gradient_iterations", &Options::conjugate_gradient_iterations);
+
+  m.def("fair", &fair, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("tolerance"),
+        py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("progress"));
+  m.def(
+    "mean_edge_length",
+    [](const Float_array& vertices, const Index_array& faces) {
+      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return CF::mean_edge_length(mesh); });
+    },
+    py::arg("vertices"), py::arg("faces"));
+  m.def(
+    "estimate_noise_level",
+    [](const Float_array& vertices, const Index_array& faces) {
+      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return PMP::estimate_noise_level(mesh); });
+    },
+    py::arg("vertices"), py::arg("faces"));
+  m.def(
+    "default_max_iterations",
+    [](PMP::Constrained_fairing_method method) { return CF::default_options(method).max_iterations; },
+    py::arg("method"));
+  m.def("read_mesh", &read_mesh, py::arg("path"));
+  m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
+  m.def("max_threads", &max_threads);
+  m.def("set_max_threads", &set_max_threads, py::arg("threads"));
+#ifdef CGAL_LINKED_WITH_TBB
+  m.attr("with_tbb") = true;
+#else
+  m.attr("with_tbb") = false;
+#endif
+}

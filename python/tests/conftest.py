@@ -1,0 +1,50 @@
+"""Meshes shared by the Python tests: the bundled ones, and seeded noisy spheres of any size."""
+
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = Path(os.environ.get("CONSTRAINED_FAIRING_DATA_DIR", ROOT / "data"))
+BAD_INPUT = ROOT / "test" / "bad_input"
+
+
+def icosphere(subdivisions):
+    """A unit sphere: an icosahedron whose triangles are split in four `subdivisions` times,
+    new vertices pushed onto the sphere. 20 * 4**subdivisions triangles."""
+    t = (1 + 5 ** 0.5) / 2
+    V = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t),
+         (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    F = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+         (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+         (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    V = np.array(V, dtype=float)
+    F = np.array(F, dtype=np.int64)
+    for _ in range(subdivisions):
+        edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+        unique, inverse = np.unique(edges, axis=0, return_inverse=True)
+        inverse = inverse.reshape(3, -1).T + len(V)
+        V = np.vstack([V, (V[unique[:, 0]] + V[unique[:, 1]]) / 2])
+        a, b, c = F.T
+        ab, bc, ca = inverse.T
+        F = np.concatenate([np.stack(x, axis=1) for x in
+                            ((a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca))])
+    V /= np.linalg.norm(V, axis=1, keepdims=True)
+    return V, F
+
+
+def noisy(V, F, amplitude, seed=1):
+    """V with seeded noise along the vertex normals (the sphere's), of at most `amplitude` times
+    the mean edge length."""
+    rng = np.random.default_rng(seed)
+    h = np.linalg.norm(V[F[:, 0]] - V[F[:, 1]], axis=1).mean()
+    return V + (amplitude * h) * rng.uniform(-1, 1, (len(V), 1)) * V
+
+
+@pytest.fixture(scope="session")
+def sphere():
+    """A noisy sphere of 5120 triangles, noise up to 0.2 h along the normal."""
+    V, F = icosphere(4)
+    return noisy(V, F, 0.2), F
