@@ -17,7 +17,9 @@ def read_mesh(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarray]:
 
     Faces with more than three vertices are triangulated (the mesh must then be manifold and
     consistently oriented). The arrays are what the tool fairs, so ``fair(*read_mesh(p), eps)``
-    gives the tool's result for ``p``, bit for bit. For other formats, use meshio or Open3D.
+    gives the tool's result for ``p``, bit for bit. A file that CGAL reads as holding no vertex
+    gives empty arrays, which `fair` rejects as ``EMPTY_MESH``. For other formats, use meshio
+    or Open3D.
 
     Parameters
     ----------

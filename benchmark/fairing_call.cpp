@@ -1,0 +1,70 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default call on one mesh file as a C++ program makes it: the baseline against which
+// benchmark/python_batch.py measures the Python module on the same arrays.
+//
+//   fairing_call --write-case OUT [MESH] [--level L]
+//       writes fairing_scaling's case: MESH (default: the bundled bunny) Loop subdivided L
+//       times (default 1: 301,632 triangles), with seeded noise of 0.25 h
+//   fairing_call IN [--runs N] [--output OUT]
+//       reads IN as the tool does, fairs it within 0.25 h (h its mean edge length), and prints
+//       the median time of N calls (default 1) on one line, "seconds S iterations I"; OUT gets
+//       the result, at full precision
+
+#include "benchmark_support.h"
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using benchmark::Mesh;
+using benchmark::Point;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+int main(int argc, char* argv[])
+{
+  const benchmark::Arguments arguments(argc, argv);
+  const std::string case_file = arguments.option("write-case", "");
+  if(!case_file.empty())
+  {
+    Mesh base, noisy;
+    std::string name;
+    if(!benchmark::read_base_mesh(arguments, base, name))
+      return EXIT_FAILURE;
+    benchmark::make_noisy_case(base, static_cast<unsigned int>(std::stoul(arguments.option("level", "1"))), noisy);
+    return CGAL::IO::write_polygon_mesh(case_file, noisy, CGAL::parameters::stream_precision(17)) ? EXIT_SUCCESS
+                                                                                                  : EXIT_FAILURE;
+  }
+
+  Mesh mesh;
+  if(arguments.positional.empty() || !CGAL::IO::read_polygon_mesh(arguments.positional[0], mesh))
+  {
+    std::cerr << "usage: fairing_call IN [--runs N] [--output OUT] | fairing_call --write-case OUT [MESH] [--level L]"
+              << std::endl;
+    return EXIT_FAILURE;
+  }
+  const double eps = 0.25 * benchmark::mean_edge_length(mesh);
+  std::vector<Point> input(mesh.points().begin(), mesh.points().end());
+  PMP::Constrained_fairing_result result;
+  const double seconds = benchmark::median_of(arguments.runs < 1 ? 1 : arguments.runs, [&] {
+    for(auto v : vertices(mesh))
+      mesh.point(v) = input[v.idx()];
+    const auto start = std::chrono::steady_clock::now();
+    result = PMP::constrained_fairing(mesh, eps);
+    return benchmark::seconds_since(start);
+  });
+  if(!result)
+  {
+    std::cerr << "error: " << result.message << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "seconds " << seconds << " iterations " << result.number_of_iterations << std::endl;
+  const std::string output = arguments.option("output", "");
+  if(!output.empty() && !CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)))
+    return EXIT_FAILURE;
+  return EXIT_SUCCESS;
+}

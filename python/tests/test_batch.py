@@ -1,0 +1,312 @@
+"""The batch of mesh files on a Dask cluster: `fair_files` and its command line."""
+
+import csv
+import multiprocessing
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cgal_constrained_fairing as cf
+
+distributed = pytest.importorskip("distributed")
+
+# Raised by the Tornado that Debian's distributed 2022.12 runs on, not by the package.
+pytestmark = pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+
+from cgal_constrained_fairing.batch import COLUMNS, fair_files  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+DATA = Path(os.environ.get("CONSTRAINED_FAIRING_DATA_DIR", ROOT / "data"))
+BAD_INPUT = ROOT / "test" / "bad_input"
+
+GOOD = ("head.off", "elephant_noisy.off", "elephant.off")
+DONE = ("converged", "iteration_limit_reached")
+
+
+def copy_inputs(folder, good=GOOD, bad=True):
+    """Copy bundled meshes into `folder`, and with `bad` a non-manifold mesh and a file that is
+    no mesh at all; the paths in order, the bad ones last."""
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for name in good:
+        paths.append(folder / name)
+        shutil.copyfile(DATA / name, paths[-1])
+    if bad:
+        paths.append(folder / "non_manifold_edge.off")
+        shutil.copyfile(BAD_INPUT / "non_manifold_edge.off", paths[-1])
+        paths.append(folder / "notes.off")
+        paths[-1].write_text("shopping list\n- milk\n- 3 eggs\n")
+    return paths
+
+
+def read_report(out_dir):
+    """The header and the rows of out_dir/report.csv, as text."""
+    with open(out_dir / "report.csv", newline="") as stream:
+        reader = csv.reader(stream)
+        header = next(reader)
+        return header, [dict(zip(header, cells)) for cells in reader]
+
+
+def expected_epsilon(eps, V, F):
+    """The epsilon that `fair_files` should use, computed as the brief of `eps` says."""
+    if eps == "auto":
+        return cf.estimate_noise_level(V, F)
+    if isinstance(eps, str) and eps.endswith("h"):
+        return float(eps[:-1]) * cf.mean_edge_length(V, F)
+    return float(eps)
+
+
+def check_outputs(rows, paths, out_dir, eps, **fair_options):
+    """Each good input's output is what `fair` gives here, bit for bit, and its row says so."""
+    for row, path in zip(rows, paths):
+        V, F = cf.read_mesh(path)
+        epsilon = expected_epsilon(eps, V, F)
+        W, report = cf.fair(V, F, epsilon, **fair_options)
+        assert row["path"] == str(path)
+        assert row["status"] == report.status.value.lower()
+        assert row["status"] in DONE
+        assert row["error"] is None
+        assert row["epsilon"] == epsilon
+        assert (row["vertices"], row["faces"]) == (len(V), len(F))
+        assert row["iterations"] == report.number_of_iterations
+        assert row["initial_energy"] == report.initial_energy
+        assert row["final_energy"] == report.final_energy
+        assert row["max_deviation"] == report.max_deviation <= epsilon
+        assert row["output"] == str(out_dir / path.name)
+        W2, F2 = cf.read_mesh(row["output"])
+        assert np.array_equal(W2, W)
+        assert np.array_equal(F2, F)
+        assert (np.linalg.norm(W2 - V, axis=1) <= epsilon).all()
+
+
+def no_partial_files(out_dir):
+    return not [p.name for p in out_dir.iterdir() if ".partial" in p.name]
+
+
+def child_processes():
+    return {p.pid for p in multiprocessing.active_children()}
+
+
+def test_local_cluster_started_and_closed(tmp_path):
+    # Before the module's cluster exists, so that the two do not share the cores.
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:2], bad=False)
+    before = child_processes()
+    rows = fair_files(paths, tmp_path / "out", workers=2, progress=False)
+    assert child_processes() <= before, "the batch's worker processes are still running"
+    check_outputs(rows, paths, tmp_path / "out", "0.25h")
+    assert all(row["worker"].startswith("tcp://") for row in rows)
+    assert all(row["seconds"] > 0 for row in rows)
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def first_run(client, tmp_path_factory):
+    """A batch of three good meshes and two bad files: its inputs, output folder and rows."""
+    folder = tmp_path_factory.mktemp("batch")
+    paths = copy_inputs(folder / "in")
+    rows = fair_files(paths, folder / "out", client, progress=False)
+    return paths, folder / "out", rows
+
+
+def test_outputs_are_those_of_fair(first_run):
+    paths, out_dir, rows = first_run
+    check_outputs(rows[:len(GOOD)], paths[:len(GOOD)], out_dir, "0.25h")
+
+
+def test_bad_files_have_error_rows_and_no_output(first_run):
+    paths, out_dir, rows = first_run
+    non_manifold, not_a_mesh = rows[len(GOOD):]
+    for row in (non_manifold, not_a_mesh):
+        assert row["status"] == "error"
+        assert row["output"] is None
+        assert not (out_dir / Path(row["path"]).name).exists()
+    assert non_manifold["error"].startswith("NON_MANIFOLD_EDGE: ")
+    with pytest.raises(cf.InputError) as error:
+        cf.fair(*cf.read_mesh(paths[-2]), 1.0)
+    assert non_manifold["error"] == f"NON_MANIFOLD_EDGE: {error.value.message}"
+    assert (non_manifold["vertices"], non_manifold["faces"]) == tuple(
+        len(A) for A in cf.read_mesh(paths[-2]))
+    assert not_a_mesh["error"].startswith("ValueError: ")
+    assert not_a_mesh["vertices"] is None
+    assert no_partial_files(out_dir)
+
+
+def test_unreadable_files_are_error_rows(client, tmp_path, capsys):
+    folder = tmp_path / "in"
+    folder.mkdir()
+    garbage = folder / "garbage.ply"
+    garbage.write_bytes(np.random.default_rng(7).integers(0, 256, 4000, np.uint8).tobytes())
+    empty = folder / BAD_INPUT.joinpath("not_a_mesh.stl").name
+    shutil.copyfile(BAD_INPUT / "not_a_mesh.stl", empty)
+    paths = [folder / "missing.off", garbage, empty]
+    rows = fair_files(paths, tmp_path / "out", client, progress=True)
+    assert [row["status"] for row in rows] == ["error"] * 3
+    assert rows[0]["error"].startswith("FileNotFoundError: ")
+    assert rows[1]["error"].startswith("ValueError: ")
+    with pytest.raises(cf.InputError) as error:
+        cf.mean_edge_length(*cf.read_mesh(empty))
+    assert rows[2]["error"] == f"{error.value.defect.value}: {error.value.message}"
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["report.csv"]
+    assert "fairing files" in capsys.readouterr().err
+
+
+def test_report_file(first_run, client):
+    paths, out_dir, rows = first_run
+    header, table = read_report(out_dir)
+    assert tuple(header) == COLUMNS
+    assert [row["path"] for row in table] == [str(p) for p in paths]
+    assert len(rows) == len(paths)
+    workers = set(client.scheduler_info()["workers"])
+    for row, cells in zip(rows, table):
+        assert set(row) == set(COLUMNS)
+        assert row["worker"] in workers
+        for column in COLUMNS:
+            value = row[column]
+            # Floats at full precision: they read back exactly.
+            if isinstance(value, float):
+                assert float(cells[column]) == value
+            else:
+                assert cells[column] == ("" if value is None else str(value))
+
+
+def test_rerun_skips_done_files_and_retries_failed_ones(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:2])
+    out_dir = tmp_path / "out"
+    first = fair_files(paths, out_dir, client, progress=False)
+    outputs = [out_dir / p.name for p in paths[:2]]
+    old = 1_000_000_000
+    for output in outputs:
+        os.utime(output, (old, old))
+    # The file that was no mesh is one now: a retry succeeds.
+    shutil.copyfile(DATA / GOOD[0], paths[-1])
+
+    second = fair_files(paths, out_dir, client, progress=False)
+    assert [os.stat(o).st_mtime for o in outputs] == [old, old]
+    assert second[:2] == first[:2]
+    assert second[2]["status"] == "error"
+    assert second[2]["error"] == first[2]["error"]
+    assert second[3]["status"] in DONE
+    check_outputs(second[3:], paths[3:], out_dir, "0.25h")
+    _, table = read_report(out_dir)
+    assert [row["status"] for row in table] == [row["status"] for row in second]
+
+    # Without the report, a done file shows as skipped.
+    os.remove(out_dir / "report.csv")
+    third = fair_files(paths, out_dir, client, progress=False)
+    assert [row["status"] for row in third] == ["skipped"] * 2 + ["error", "skipped"]
+    assert [row["output"] for row in third] == [str(out_dir / p.name) for p in paths[:2]] + [
+        None, str(out_dir / paths[3].name)]
+
+    forced = fair_files(paths, out_dir, client, force=True, progress=False)
+    assert all(os.stat(o).st_mtime != old for o in outputs)
+    check_outputs(forced[:2] + forced[3:], paths[:2] + paths[3:], out_dir, "0.25h")
+    assert forced[2]["status"] == "error"
+    assert no_partial_files(out_dir)
+
+
+@pytest.mark.parametrize("eps", ["auto", 0.02, "0.02", "0.25h"],
+                         ids=["auto", "number", "numeric string", "0.25h"])
+def test_eps(client, tmp_path, eps):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:2], bad=False)
+    rows = fair_files(paths, tmp_path / "out", client, eps=eps, progress=False)
+    check_outputs(rows, paths, tmp_path / "out", eps)
+
+
+def test_auto_eps_of_a_tiny_mesh_is_an_error(client, tmp_path):
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0]])
+    F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    assert cf.estimate_noise_level(V, F) <= 0
+    (tmp_path / "in").mkdir()
+    path = tmp_path / "in" / "tetrahedron.ply"
+    cf.write_mesh(path, V, F)
+    [row] = fair_files([path], tmp_path / "out", client, eps="auto", progress=False)
+    assert row["status"] == "error"
+    assert "noise level" in row["error"] and "give eps" in row["error"]
+    assert not (tmp_path / "out" / path.name).exists()
+
+
+def test_fair_options_reach_fair(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[1:2], bad=False)
+    options = dict(objective="accurate", max_iterations=3)
+    rows = fair_files(paths, tmp_path / "out", client, progress=False, **options)
+    check_outputs(rows, paths, tmp_path / "out", "0.25h", **options)
+    assert rows[0]["status"] == "iteration_limit_reached"
+
+
+def test_refusals_before_anything_is_written(tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:1], bad=False)
+    other = tmp_path / "other"
+    other.mkdir()
+    shutil.copyfile(paths[0], other / paths[0].name)
+    out_dir = tmp_path / "out"
+    # No client is given: a cluster started by mistake would only slow the test down.
+    with pytest.raises(ValueError, match="file name"):
+        fair_files([paths[0], other / paths[0].name], out_dir, progress=False)
+    with pytest.raises(ValueError, match="overwrite"):
+        fair_files(paths, tmp_path / "in", progress=False)
+    with pytest.raises(ValueError, match="eps"):
+        fair_files(paths, out_dir, eps="a quarter", progress=False)
+    with pytest.raises(ValueError, match="eps"):
+        fair_files(paths, out_dir, eps=-1.0, progress=False)
+    with pytest.raises(TypeError, match="epsilon"):
+        fair_files(paths, out_dir, epsilon=1.0, progress=False)
+    assert not out_dir.exists()
+    assert sorted(p.name for p in (tmp_path / "in").iterdir()) == [paths[0].name]
+
+
+def run_cli(*args):
+    package_parent = str(Path(cf.__file__).resolve().parents[1])
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [package_parent] + [p for p in [env.get("PYTHONPATH")] if p])
+    return subprocess.run([sys.executable, "-m", "cgal_constrained_fairing.batch", *args],
+                          env=env, capture_output=True, text=True, timeout=120)
+
+
+def test_command_line(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:2])
+    out_dir = tmp_path / "out"
+    scheduler = client.scheduler.address
+    good = [str(p) for p in paths[:2]]
+
+    done = run_cli(*good, "-o", str(out_dir), "--scheduler", scheduler, "--eps", "0.3h")
+    assert done.returncode == 0, done.stderr
+    assert f"2 faired, 0 skipped, 0 failed; report: {out_dir / 'report.csv'}" in done.stdout
+    header, table = read_report(out_dir)
+    assert tuple(header) == COLUMNS
+    assert [row["path"] for row in table] == good
+    workers = set(client.scheduler_info()["workers"])
+    for row, path in zip(table, paths):
+        V, F = cf.read_mesh(path)
+        assert float(row["epsilon"]) == 0.3 * cf.mean_edge_length(V, F)
+        assert row["worker"] in workers
+        W, _ = cf.fair(V, F, float(row["epsilon"]))
+        assert np.array_equal(cf.read_mesh(out_dir / path.name)[0], W)
+
+    failed = run_cli(*map(str, paths), "-o", str(out_dir), "--scheduler", scheduler,
+                     "--eps", "0.3h")
+    assert failed.returncode == 1, failed.stderr
+    assert "0 faired, 2 skipped, 2 failed" in failed.stdout
+    assert "NON_MANIFOLD_EDGE" in failed.stderr and str(paths[-1]) in failed.stderr
+    _, table = read_report(out_dir)
+    assert [row["status"] for row in table][2:] == ["error", "error"]
+    assert no_partial_files(out_dir)
+
+    both = run_cli(*good, "-o", str(tmp_path / "elsewhere"), "--workers", "1",
+                   "--scheduler", scheduler)
+    assert both.returncode == 2
+    assert not (tmp_path / "elsewhere").exists()
