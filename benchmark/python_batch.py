@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The Python module against the C++ call, and batches on Dask against a serial loop.
 
-    PYTHONPATH=build/python /usr/bin/python3 benchmark/python_batch.py [--build build] [--runs 3]
+    PYTHONPATH=build/python /usr/bin/python3 benchmark/python_batch.py [--build build] [--runs 5]
         [--demo-dir build/cgal_demo_data/meshes] [--skip-call] [--skip-batch]
 
 1. The call: fairing_scaling's 301,632-triangle case (the bundled bunny Loop subdivided once,
@@ -9,12 +9,16 @@
    back by both sides. Each run times the C++ default call (in its own process, on the mesh it
    read) and then ``fair()`` on the arrays read by ``read_mesh`` (checks, mesh construction and
    the copy of the result included), one after the other; the overhead is the ratio of the
-   medians. The two results must be bit-identical.
+   medians. The C++ program also times the construction of its mesh from the file's arrays
+   followed by the call, what a C++ program holding the arrays does. The results must be
+   bit-identical.
 2. The batch: 40 small noisy scans, the bundled meshes and CGAL's demo meshes (filled in by
    benchmark/get_demo_meshes.sh; without them, the bundled meshes alone, with more seeds), each
    with seeded noise of 0.25 h at 5 seeds, epsilon 0.25 h. A serial Python loop (read, fair,
-   write), then ``fair_files`` on a LocalCluster of 1 and of 2 workers (its start included, as
-   the command line pays it). The outputs must be bit-identical to the loop's.
+   write; the library's loops on all cores), then ``fair_files`` on a LocalCluster of 1 worker
+   (the library on both cores, and on one), and of 2 workers (one core each), the cluster's
+   start included, as the command line pays it. The outputs must be bit-identical to the
+   loop's.
 
 Medians of ``--runs`` runs; the CPU model and the threads are printed with the figures.
 """
@@ -73,23 +77,26 @@ def bench_call(build, runs, work):
     V, F = cf.read_mesh(case)
     eps = 0.25 * cf.mean_edge_length(V, F)
     cpp_out = work / "cpp_out.off"
-    cpp, py = [], []
+    cpp, arrays, py = [], [], []
     W = None
     for run in range(runs):
         command = [str(program), str(case)] + (["--output", str(cpp_out)] if run == 0 else [])
         line = subprocess.run(command, check=True, capture_output=True, text=True).stdout
         cpp.append(float(re.search(r"seconds (\S+)", line).group(1)))
+        arrays.append(float(re.search(r"from_arrays (\S+)", line).group(1)))
         start = time.perf_counter()
         W, report = cf.fair(V, F, eps)
         py.append(time.perf_counter() - start)
     identical = np.array_equal(cf.read_mesh(cpp_out)[0], W)
-    c, p = statistics.median(cpp), statistics.median(py)
+    c, a, p = statistics.median(cpp), statistics.median(arrays), statistics.median(py)
     print(f"call: {len(F)} triangles, eps 0.25 h, default call, {report.number_of_iterations} "
           f"iterations; {machine_line()}")
-    print(f"  C++ call      {c:8.3f} s   (runs: {', '.join(f'{t:.3f}' for t in cpp)})")
-    print(f"  Python fair() {p:8.3f} s   (runs: {', '.join(f'{t:.3f}' for t in py)})")
-    print(f"  overhead {100 * (p / c - 1):+.1f} % (median against median); results "
-          f"{'bit-identical' if identical else 'DIFFERENT'}")
+    print(f"  C++ call on the mesh          {c:8.3f} s   (runs: {', '.join(f'{t:.3f}' for t in cpp)})")
+    print(f"  C++ mesh from arrays, call    {a:8.3f} s   (runs: {', '.join(f'{t:.3f}' for t in arrays)})")
+    print(f"  Python fair() on the arrays   {p:8.3f} s   (runs: {', '.join(f'{t:.3f}' for t in py)})")
+    print(f"  overhead {100 * (p / c - 1):+.1f} % against the call on the mesh, "
+          f"{100 * (p / a - 1):+.1f} % against the C++ program that holds the arrays "
+          f"(medians); results {'bit-identical' if identical else 'DIFFERENT'}")
 
 
 def make_scans(demo_dir, work):
@@ -135,38 +142,43 @@ def bench_batch(demo_dir, runs, work):
 
     paths = make_scans(demo_dir, work)
     triangles = sum(len(cf.read_mesh(p)[1]) for p in paths)
-    times = {"serial loop": [], "1 worker": [], "2 workers": []}
+    # (name, workers, library threads per worker): one worker on both cores, one worker on one
+    # core, and two workers of one core each.
+    batches = [("1 worker", 1, None), ("1 worker, 1 thread", 1, 1), ("2 workers", 2, None)]
+    times = {name: [] for name in ["serial loop"] + [b[0] for b in batches]}
     for run in range(runs):
         out = work / f"serial{run}"
         start = time.perf_counter()
         serial_loop(paths, out)
         times["serial loop"].append(time.perf_counter() - start)
-        for workers in (1, 2):
-            batch_out = work / f"batch{workers}_{run}"
+        for name, workers, threads in batches:
+            batch_out = work / f"batch{len(times[name])}_{name.replace(' ', '_')}"
             start = time.perf_counter()
-            rows = fair_files(paths, batch_out, workers=workers, progress=False)
-            times[f"{workers} worker{'s' if workers > 1 else ''}"].append(time.perf_counter() - start)
+            rows = fair_files(paths, batch_out, workers=workers, threads=threads, progress=False)
+            times[name].append(time.perf_counter() - start)
             failed = [row for row in rows if row["status"] == "error"]
             different = [p.name for p in paths
                          if not np.array_equal(cf.read_mesh(batch_out / p.name)[0],
                                                cf.read_mesh(out / p.name)[0])]
             if failed or different:
-                print(f"batch with {workers} workers: {len(failed)} errors, outputs different "
-                      f"from the serial loop's: {different}")
+                print(f"batch {name}: {len(failed)} errors, outputs different from the serial "
+                      f"loop's: {different}")
     print(f"batch: {len(paths)} noisy scans, {triangles} triangles in all, eps 0.25 h; "
           f"{machine_line()}")
     median = {name: statistics.median(t) for name, t in times.items()}
     for name, t in times.items():
-        print(f"  {name:12s} {median[name]:8.2f} s   (runs: {', '.join(f'{x:.2f}' for x in t)})")
-    print(f"  2 workers against 1: {median['1 worker'] / median['2 workers']:.2f}x; "
-          f"2 workers against the serial loop: {median['serial loop'] / median['2 workers']:.2f}x "
-          "(cluster start included)")
+        print(f"  {name:20s} {median[name]:8.2f} s   (runs: {', '.join(f'{x:.2f}' for x in t)})")
+    print(f"  2 workers against 1 worker on both cores: "
+          f"{median['1 worker'] / median['2 workers']:.2f}x, against 1 worker on one core: "
+          f"{median['1 worker, 1 thread'] / median['2 workers']:.2f}x, against the serial loop: "
+          f"{median['serial loop'] / median['2 workers']:.2f}x (cluster start included; "
+          "outputs bit-identical to the loop's)")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--build", default=str(ROOT / "build"))
-    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--runs", type=int, default=5)
     parser.add_argument("--demo-dir", default=str(ROOT / "build" / "cgal_demo_data" / "meshes"))
     parser.add_argument("--skip-call", action="store_true")
     parser.add_argument("--skip-batch", action="store_true")

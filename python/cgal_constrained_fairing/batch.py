@@ -70,6 +70,7 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
                client: Optional["distributed.Client"] = None, *,
                eps: Eps = "0.25h",
                workers: Optional[int] = None,
+               threads: Optional[int] = None,
                force: bool = False,
                progress: Optional[bool] = None,
                **fair_options: Any) -> List[Row]:
@@ -100,8 +101,11 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         meshes' units.
     workers : int, optional
         The worker processes of the local cluster: default, and at most, one per core (and
-        no more than files to fair). Each process lets the library's parallel loops use its
-        share of the cores. Only without `client`.
+        no more than files to fair). Only without `client`.
+    threads : int, optional
+        The threads of the library's parallel loops (TBB) in each worker process. Default:
+        on the local cluster, the cores divided among its workers; on a `client`'s cluster,
+        no limit (a ``dask-worker`` process per machine, whose tasks share its cores).
     force : bool
         Fair every file, even those whose output exists.
     progress : bool, optional
@@ -146,7 +150,9 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     cores = _cores()
     if workers is not None:
         workers = _positive_int(workers, "workers")
-    return batch.run(client, workers, cores, _show_progress(progress))
+    if threads is not None:
+        threads = _positive_int(threads, "threads")
+    return batch.run(client, workers, threads, cores, _show_progress(progress))
 
 
 class _Batch:
@@ -195,7 +201,7 @@ class _Batch:
                 row.update(status="skipped", output=str(output))
             self.rows[index] = row
 
-    def run(self, client, workers, cores, show_progress) -> List[Row]:
+    def run(self, client, workers, threads, cores, show_progress) -> List[Row]:
         _import_distributed()  # before anything is written
         os.makedirs(self.out_dir, exist_ok=True)
         self.plan()
@@ -203,13 +209,13 @@ class _Batch:
             if client is not None:
                 # dask-worker starts one process per machine by default: its tasks share
                 # TBB's pool, so the library is not limited.
-                self._run_on(client, threads=0, show_progress=show_progress)
+                self._run_on(client, threads=threads or 0, show_progress=show_progress)
             else:
-                self._run_locally(workers, cores, show_progress)
+                self._run_locally(workers, threads, cores, show_progress)
         _write_report(self.report_path, self.rows)
         return list(self.rows)
 
-    def _run_locally(self, workers, cores, show_progress):
+    def _run_locally(self, workers, threads, cores, show_progress):
         distributed = _import_distributed()
         workers = min(workers or cores, cores, len(self.todo))
         cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
@@ -218,7 +224,7 @@ class _Batch:
             # Not the default client: the caller's own stays the default.
             with distributed.Client(cluster, set_as_default=False) as client:
                 # The processes share the cores, so TBB gets each its share.
-                self._run_on(client, threads=max(1, cores // workers),
+                self._run_on(client, threads=threads or max(1, cores // workers),
                              show_progress=show_progress)
         finally:
             cluster.close()
@@ -227,7 +233,9 @@ class _Batch:
         distributed = _import_distributed()
         token = uuid.uuid4().hex[:8]
         futures = {}
-        for index in self.todo:
+        # The largest files first, so that the last tasks are short and no worker idles long
+        # while another finishes.
+        for index in sorted(self.todo, key=lambda i: -_size(self.inputs[i])):
             key = f"fair_file-{self.inputs[index].name}-{token}-{index}"
             future = client.submit(_fair_file, str(self.inputs[index]), str(self.outputs[index]),
                                    self.eps, self.fair_options, threads, key=key, pure=False)
@@ -368,6 +376,13 @@ def _cores() -> int:
         return len(os.sched_getaffinity(0))
     except AttributeError:  # not on Linux
         return os.cpu_count() or 1
+
+
+def _size(path: Path) -> int:
+    try:
+        return path.stat().st_size
+    except OSError:  # missing: its task reports it
+        return 0
 
 
 def _same_file(a: Path, b: Path) -> bool:
@@ -526,11 +541,17 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                        help="worker processes on this machine (default: one per core)")
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="run on the cluster of this Dask scheduler, e.g. tcp://host:8786")
+    parser.add_argument("--threads", type=int, metavar="K",
+                        help="threads of the library's parallel loops in each worker process "
+                             "(default: the cores shared among the local workers; no limit on "
+                             "a scheduler's cluster)")
     parser.add_argument("--force", action="store_true",
                         help="fair every file, even those whose output exists")
     args = parser.parse_args(argv)
     if args.workers is not None and args.workers < 1:
         parser.error(f"--workers must be at least 1 (got {args.workers})")
+    if args.threads is not None and args.threads < 1:
+        parser.error(f"--threads must be at least 1 (got {args.threads})")
 
     options = {"objective": "accurate"} if args.accurate else {}
     try:
@@ -548,9 +569,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                       file=sys.stderr)
                 return 1
             with client:
-                rows = batch.run(client, None, _cores(), _show_progress(None))
+                rows = batch.run(client, None, args.threads, _cores(), _show_progress(None))
         else:
-            rows = batch.run(None, args.workers, _cores(), _show_progress(None))
+            rows = batch.run(None, args.workers, args.threads, _cores(), _show_progress(None))
     except KeyboardInterrupt:
         # The report holds the files done so far; running again goes on from there.
         print(f"interrupted; report: {batch.report_path}", file=sys.stderr)

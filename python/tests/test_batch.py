@@ -310,3 +310,18 @@ def test_command_line(client, tmp_path):
                    "--scheduler", scheduler)
     assert both.returncode == 2
     assert not (tmp_path / "elsewhere").exists()
+
+
+def test_threads_limit_the_library_in_each_worker(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:2], bad=False)
+    rows = fair_files(paths, tmp_path / "out", client, threads=1, progress=False)
+    check_outputs(rows, paths, tmp_path / "out", "0.25h")
+    workers = {row["worker"] for row in rows}
+    limits = client.run(cf.max_threads, workers=list(workers))
+    assert set(limits.values()) == {1} or not cf._core.with_tbb
+    # Without `threads`, a client's cluster is not limited again.
+    fair_files(paths, tmp_path / "out", client, force=True, progress=False)
+    limits = client.run(cf.max_threads, workers=list(workers))
+    assert all(limit == os.cpu_count() for limit in limits.values()) or not cf._core.with_tbb
+    with pytest.raises(ValueError, match="threads"):
+        fair_files(paths, tmp_path / "out2", client, threads=0)

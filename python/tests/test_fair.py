@@ -381,6 +381,25 @@ def test_calls_from_two_threads_at_once(sphere, elephant):
     assert all(np.array_equal(r, e) for r, e in zip(results, expected))
 
 
+def test_the_gil_is_released_while_it_computes():
+    # While a call runs in another thread, this thread's Python code runs at once: with the
+    # GIL held, it would wait for the call's next check of Ctrl-C, a fifth of a second away.
+    V, F = icosphere(6)
+    V = noisy(V, F, 0.3)
+    thread = threading.Thread(target=cf.fair, args=(V, F, 0.004),
+                              kwargs=dict(max_iterations=200, energy_decrease_threshold=0))
+    thread.start()
+    time.sleep(0.3)  # into the iterations
+    waits = []
+    while thread.is_alive() and len(waits) < 20:
+        start = time.perf_counter()
+        time.sleep(0.01)  # gives the GIL up, and takes it back to return
+        waits.append(time.perf_counter() - start - 0.01)
+    thread.join()
+    assert len(waits) >= 5, "the call ended before it could be observed"
+    assert sorted(waits)[len(waits) // 2] < 0.05
+
+
 def test_results_do_not_depend_on_the_number_of_threads(sphere):
     V, F = sphere
     W, _ = cf.fair(V, F, 0.05)

@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input_check.h>
 
 #include <algorithm>
+#include <limits>
 #include <cstddef>
 #include <numeric>
 #include <string>
@@ -57,86 +58,98 @@ Input_error polygon_soup_error(std::size_t number_of_points, const PolygonRange&
     }
     corner_start[f + 1] = corner_start[f] + k;
   }
+  // The solver's 32-bit indices (Points.h) number the vertices and the corners below.
+  if(number_of_points > (std::numeric_limits<Index>::max)() || corner_start[m] >= (std::numeric_limits<Index>::max)())
+    return {D::MESH_TOO_LARGE, "the mesh is too large: at most " + std::to_string((std::numeric_limits<Index>::max)()) +
+                                 " vertices and face corners"};
+
+  // Each corner's vertex, and the next corner around its face: the loops below run over them.
   const std::size_t corners = corner_start[m];
-  const auto vertex_at = [&](std::size_t f, std::size_t c) {
+  std::vector<Index> corner_vertex(corners), next_corner(corners);
+  for(std::size_t f = 0; f < m; ++f)
+  {
     const auto& polygon = polygons[f];
-    return static_cast<std::size_t>(polygon[c % static_cast<std::size_t>(std::size(polygon))]);
+    for(std::size_t c = corner_start[f]; c < corner_start[f + 1]; ++c)
+    {
+      corner_vertex[c] = static_cast<Index>(polygon[c - corner_start[f]]);
+      next_corner[c] = static_cast<Index>(c + 1 < corner_start[f + 1] ? c + 1 : corner_start[f]);
+    }
+  }
+  // The face of corner c, for messages.
+  const auto face_of = [&](std::size_t c) {
+    return std::size_t(std::upper_bound(corner_start.begin(), corner_start.end(), c) - corner_start.begin()) - 1;
   };
 
-  // The sides of the faces, as (smaller vertex, larger vertex, face, corner of the side's
-  // source), sorted by (smaller, larger, face): placed by the smaller vertex as in a counting
-  // sort, then each vertex's few sides sorted.
+  // The sides of the faces, each named by the corner at its source, grouped by their smaller
+  // vertex as in a counting sort and then sorted by (larger vertex, corner), which sorts them
+  // by face too since the corners are numbered face by face.
   struct Side
   {
-    std::size_t a, b, face, corner;
+    Index b, corner;
   };
-  std::vector<std::size_t> start(number_of_points + 1, 0);
-  for(std::size_t f = 0; f < m; ++f)
-    for(std::size_t c = 0; c < corner_start[f + 1] - corner_start[f]; ++c)
-      ++start[(std::min)(vertex_at(f, c), vertex_at(f, c + 1)) + 1];
+  std::vector<Index> start(number_of_points + 1, 0);
+  for(std::size_t c = 0; c < corners; ++c)
+    ++start[(std::min)(corner_vertex[c], corner_vertex[next_corner[c]]) + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::vector<Side> sides(corners);
   {
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
-    for(std::size_t f = 0; f < m; ++f)
-      for(std::size_t c = 0; c < corner_start[f + 1] - corner_start[f]; ++c)
-      {
-        const std::size_t s = vertex_at(f, c), t = vertex_at(f, c + 1);
-        sides[next[(std::min)(s, t)]++] = Side{(std::min)(s, t), (std::max)(s, t), f, corner_start[f] + c};
-      }
+    std::vector<Index> next(start.begin(), start.end() - 1);
+    for(std::size_t c = 0; c < corners; ++c)
+    {
+      const Index s = corner_vertex[c], t = corner_vertex[next_corner[c]];
+      sides[next[(std::min)(s, t)]++] = Side{(std::max)(s, t), static_cast<Index>(c)};
+    }
   }
   for(std::size_t v = 0; v < number_of_points; ++v)
     std::sort(sides.begin() + std::ptrdiff_t(start[v]), sides.begin() + std::ptrdiff_t(start[v + 1]),
-              [](const Side& x, const Side& y) { return x.b != y.b ? x.b < y.b : x.face < y.face; });
+              [](const Side& x, const Side& y) { return x.b != y.b ? x.b < y.b : x.corner < y.corner; });
 
   // The corners around each vertex that are joined across an interior edge belong to one fan:
-  // a union-find over the corners, each corner named by its index.
-  std::vector<std::size_t> parent(corners);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  const auto root = [&parent](std::size_t c) {
+  // a union-find over the corners.
+  std::vector<Index> parent(corners);
+  std::iota(parent.begin(), parent.end(), Index(0));
+  const auto root = [&parent](Index c) {
     while(parent[c] != c)
       c = parent[c] = parent[parent[c]];
     return c;
   };
-  const auto join = [&](std::size_t c, std::size_t d) { parent[root(c)] = root(d); };
-  // The corner after corner `c` in its face, `c` being corner `c - corner_start[f]` of face f.
-  const auto next_corner = [&](std::size_t f, std::size_t c) { return c + 1 == corner_start[f + 1] ? corner_start[f] : c + 1; };
+  const auto join = [&](Index c, Index d) { parent[root(c)] = root(d); };
 
-  for(std::size_t i = 0, j = 0; i < sides.size(); i = j)
-  {
-    while(j < sides.size() && sides[j].a == sides[i].a && sides[j].b == sides[i].b)
-      ++j;
-    const Side& x = sides[i];
-    if(j - i > 2)
-      return {D::NON_MANIFOLD_EDGE, "the edge between vertices " + std::to_string(x.a) + " and " + std::to_string(x.b) +
-                                      " has " + std::to_string(j - i) + " faces (a non-manifold edge)"};
-    if(j - i < 2)
-      continue;
-    const Side& y = sides[i + 1];
-    const std::size_t x_source = vertex_at(x.face, x.corner - corner_start[x.face]);
-    const std::size_t y_source = vertex_at(y.face, y.corner - corner_start[y.face]);
-    if(x_source == y_source)
-      return {D::INCONSISTENT_ORIENTATION,
-              "faces " + std::to_string(x.face) + " and " + std::to_string(y.face) +
-                " are oriented inconsistently: both run from vertex " + std::to_string(x_source) + " to vertex " +
-                std::to_string(x_source == x.a ? x.b : x.a)};
-    // x runs s -> t and y runs t -> s: x's source corner meets y's target corner, and so on.
-    join(x.corner, next_corner(y.face, y.corner));
-    join(next_corner(x.face, x.corner), y.corner);
-  }
+  for(std::size_t v = 0; v < number_of_points; ++v)
+    for(std::size_t i = start[v], j = start[v]; i < start[v + 1]; i = j)
+    {
+      while(j < start[v + 1] && sides[j].b == sides[i].b)
+        ++j;
+      const Side& x = sides[i];
+      if(j - i > 2)
+        return {D::NON_MANIFOLD_EDGE, "the edge between vertices " + std::to_string(v) + " and " +
+                                        std::to_string(x.b) + " has " + std::to_string(j - i) +
+                                        " faces (a non-manifold edge)"};
+      if(j - i < 2)
+        continue;
+      const Side& y = sides[i + 1];
+      const Index source = corner_vertex[x.corner];
+      if(source == corner_vertex[y.corner])
+        return {D::INCONSISTENT_ORIENTATION,
+                "faces " + std::to_string(face_of(x.corner)) + " and " + std::to_string(face_of(y.corner)) +
+                  " are oriented inconsistently: both run from vertex " + std::to_string(source) + " to vertex " +
+                  std::to_string(source == v ? x.b : v)};
+      // x runs s -> t and y runs t -> s: x's source corner meets y's target corner, and so on.
+      join(x.corner, next_corner[y.corner]);
+      join(next_corner[x.corner], y.corner);
+    }
 
   // A vertex whose corners are in more than one set is non-manifold; the smallest is named.
-  std::vector<std::size_t> fan(number_of_points, corners); // a corner's root, `corners` for none yet
+  std::vector<Index> fan(number_of_points, static_cast<Index>(corners)); // a corner's root, `corners` for none yet
   std::size_t first = number_of_points;
-  for(std::size_t f = 0; f < m; ++f)
-    for(std::size_t c = corner_start[f]; c < corner_start[f + 1]; ++c)
-    {
-      const std::size_t v = vertex_at(f, c - corner_start[f]), r = root(c);
-      if(fan[v] == corners)
-        fan[v] = r;
-      else if(fan[v] != r)
-        first = (std::min)(first, v);
-    }
+  for(std::size_t c = 0; c < corners; ++c)
+  {
+    const Index v = corner_vertex[c], r = root(static_cast<Index>(c));
+    if(fan[v] == corners)
+      fan[v] = r;
+    else if(fan[v] != r)
+      first = (std::min)(first, std::size_t(v));
+  }
   if(first < number_of_points)
     return {D::NON_MANIFOLD_VERTEX, "vertex " + std::to_string(first) + " is non-manifold: its faces form more than one fan"};
   return {};
