@@ -15,12 +15,9 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Polygon_soup_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_file.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -80,9 +77,10 @@ options:
   --help                   this text
 )";
 
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Input_error;
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Captured_cerr;
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::make_triangle_mesh;
 using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::polygon_soup_error;
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::read_polygon_soup_file;
 
 // "0.002" is absolute, "0.25h" is 0.25 times the mean edge length. Returns false if malformed.
 bool parse_epsilon(const std::string& text, const Mesh& mesh, double& epsilon)
@@ -107,46 +105,14 @@ bool parse_epsilon(const std::string& text, const Mesh& mesh, double& epsilon)
 
 using Polygon = std::vector<std::size_t>;
 
-// CGAL's readers and writers explain failures on std::cerr; this keeps their words for our
-// one-line message.
-class Captured_cerr
-{
-public:
-  Captured_cerr() : m_saved(std::cerr.rdbuf(m_text.rdbuf())) {}
-  ~Captured_cerr() { std::cerr.rdbuf(m_saved); }
-  // ": what CGAL said", on one line, or nothing
-  std::string reason() const
-  {
-    std::string text = m_text.str();
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    while(!text.empty() && text.back() == ' ')
-      text.pop_back();
-    return text.empty() ? text : " (" + text + ")";
-  }
-
-private:
-  std::ostringstream m_text;
-  std::streambuf* m_saved;
-};
-
 // Reads a mesh from any format CGAL reads, its faces triangulated, `triangulated` of them.
 // Returns an empty string or the reason it failed.
 std::string read_mesh(const std::string& in, Mesh& mesh, std::size_t& triangulated)
 {
   std::vector<K::Point_3> points;
   std::vector<Polygon> polygons;
-  Captured_cerr cgal;
-  if(!CGAL::IO::read_polygon_soup(in, points, polygons))
-    return "cannot read " + in + " as an OFF, OBJ, PLY or STL mesh" + cgal.reason();
-  const Input_error soup = polygon_soup_error(points.size(), polygons);
-  if(soup)
-    return in + ": " + soup.message;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  triangulated = static_cast<std::size_t>(
-    std::count_if(polygons.begin(), polygons.end(), [](const Polygon& p) { return p.size() > 3; }));
-  if(triangulated > 0 && !PMP::triangulate_faces(mesh))
-    return "cannot triangulate the faces of " + in + " with more than three vertices";
-  return std::string();
+  const std::string error = read_polygon_soup_file(in, points, polygons);
+  return error.empty() ? make_triangle_mesh(in, points, polygons, mesh, triangulated) : error;
 }
 
 bool writable_format(const std::string& out)

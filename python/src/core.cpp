@@ -12,12 +12,9 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Polygon_soup_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_file.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <pybind11/numpy.h>
@@ -29,14 +26,13 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <iostream>
 #include <limits>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -348,69 +344,35 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
   return report;
 }
 
-// CGAL's words on std::cerr, caught for an error message.
-class Captured_cerr
-{
-public:
-  Captured_cerr() : m_saved(std::cerr.rdbuf(m_text.rdbuf())) {}
-  ~Captured_cerr() { std::cerr.rdbuf(m_saved); }
-  std::string reason() const
-  {
-    std::string text = m_text.str();
-    for(char& c : text)
-      if(c == '\n')
-        c = ' ';
-    while(!text.empty() && text.back() == ' ')
-      text.pop_back();
-    return text.empty() ? text : " (" + text + ")";
-  }
-
-private:
-  std::ostringstream m_text;
-  std::streambuf* m_saved;
-};
-
-// Reads a polygon soup with CGAL's readers (OFF, OBJ, PLY, STL, by the file's extension); faces
-// of more than three vertices are triangulated as the command-line tool does.
+// Reads a file as the command-line tool does (Mesh_file.h); a file of triangles gives its
+// own arrays, in its order, and one with larger faces those of its triangulated mesh.
 py::tuple read_mesh(const std::string& path)
 {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
   std::string error;
-  Mesh mesh;
-  bool triangles = true;
   {
     py::gil_scoped_release release;
-    Captured_cerr cgal;
-    if(!CGAL::IO::read_polygon_soup(path, points, polygons))
-      error = "cannot read " + path + " as an OFF, OBJ, PLY or STL mesh" + cgal.reason();
-    for(const auto& polygon : polygons)
-      triangles = triangles && polygon.size() == 3;
+    error = CF::read_polygon_soup_file(path, points, polygons);
+    const bool triangles =
+      std::all_of(polygons.begin(), polygons.end(), [](const std::vector<std::size_t>& p) { return p.size() == 3; });
     if(error.empty() && !triangles)
     {
-      if(const CF::Input_error soup = CF::polygon_soup_error(points.size(), polygons))
-        error = path + ": " + soup.message;
-      else
+      Mesh mesh;
+      std::size_t triangulated = 0;
+      error = CF::make_triangle_mesh(path, points, polygons, mesh, triangulated);
+      points.assign(mesh.points().begin(), mesh.points().end());
+      polygons.clear();
+      for(face_descriptor f : mesh.faces())
       {
-        PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-        if(!PMP::triangulate_faces(mesh))
-          error = "cannot triangulate the faces of " + path + " with more than three vertices";
+        polygons.emplace_back();
+        for(vertex_descriptor v : vertices_around_face(mesh.halfedge(f), mesh))
+          polygons.back().push_back(std::size_t(v.idx()));
       }
     }
   }
   if(!error.empty())
     throw py::value_error(error);
-  if(!triangles)
-  {
-    points.assign(mesh.points().begin(), mesh.points().end());
-    polygons.clear();
-    for(face_descriptor f : faces(mesh))
-    {
-      polygons.emplace_back();
-      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))
-        polygons.back().push_back(std::size_t(v.idx()));
-    }
-  }
   Float_array V({static_cast<py::ssize_t>(points.size()), py::ssize_t(3)});
   Index_array F({static_cast<py::ssize_t>(polygons.size()), py::ssize_t(3)});
   double* v = V.mutable_data();
@@ -441,7 +403,7 @@ void write_mesh(const std::string& path, const Float_array& vertices, const Inde
     for(std::size_t i = 0; i < m; ++i)
       for(std::size_t c = 0; c < 3; ++c)
         triangles[i][c] = static_cast<std::size_t>(faces.data()[3 * i + c]);
-    Captured_cerr cgal;
+    CF::Captured_cerr cgal;
     if(!CGAL::IO::write_polygon_soup(path, points, triangles, CGAL::parameters::stream_precision(17)))
       error = "cannot write " + path + cgal.reason();
   }
