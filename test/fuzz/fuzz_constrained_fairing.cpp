@@ -3,10 +3,13 @@
 //
 // libFuzzer target: arbitrary bytes, saved as an OFF, PLY, STL or OBJ file (guessed from the
 // first bytes), read by CGAL::IO::read_polygon_mesh and faired for a few iterations. Beyond
-// crashes and sanitizer reports, it aborts when a promise breaks: a failed call must leave
-// the mesh bit-identical, a successful one must give finite points within the bound exactly.
+// crashes and sanitizer reports, it aborts when a promise breaks: the soup check must accept
+// exactly what CGAL's builder accepts, a failed call must leave the mesh bit-identical, a
+// successful one must give finite points within the bound exactly.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Polygon_soup_check.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -134,6 +137,15 @@ bool is_plain_off(const std::uint8_t* data, std::size_t size)
   return true;
 }
 
+void require(bool condition, const char* promise)
+{
+  if(!condition)
+  {
+    std::cerr << "broken promise: " << promise << std::endl;
+    std::abort();
+  }
+}
+
 // Inputs that meet a known defect of CGAL 5.5's readers are left out, the search being about
 // what comes after reading. The mesh builder (Generic_facegraph_builder) does not check that
 // face indices are below the number of vertices, and reads out of bounds when they are not.
@@ -150,6 +162,11 @@ bool is_readable(const std::string& path, const std::uint8_t* data, std::size_t 
     for(std::size_t i : polygon)
       if(i >= points.size())
         return false;
+  // The soup check of the command-line tool and the Python module guards CGAL's mesh builder:
+  // it must accept exactly the soups that CGAL's own test accepts.
+  const bool accepted = !PMP::internal::Constrained_fairing::polygon_soup_error(points.size(), polygons);
+  require(accepted == (!polygons.empty() && PMP::is_polygon_soup_a_polygon_mesh(polygons)),
+          "the soup check agrees with is_polygon_soup_a_polygon_mesh()");
   return true;
 }
 
@@ -160,15 +177,6 @@ std::vector<double> coordinates(const Mesh& m)
     for(int c = 0; c < 3; ++c)
       result.push_back(m.point(v)[c]);
   return result;
-}
-
-void require(bool condition, const char* promise)
-{
-  if(!condition)
-  {
-    std::cerr << "broken promise: " << promise << std::endl;
-    std::abort();
-  }
 }
 
 } // namespace
