@@ -80,8 +80,8 @@ struct Row_map
   }
 };
 
-// A property map over an array of one value per vertex, read (the fixed vertices) or written
-// (the deviations and the vertices at their bound).
+// A property map over an output array of one value per vertex: the deviations and the vertices
+// at their bound.
 template <typename Value>
 struct Array_map
 {
@@ -251,14 +251,6 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
     }
     if(!fixed)
       none_fixed.reset(new bool[n]());
-    // Without half-extents, the box is the tolerance's cube, as epsilon's per axis gives.
-    std::vector<double> cube;
-    const double* extents_data = box_half_extents ? box_half_extents->data() : nullptr;
-    if(!box_half_extents)
-    {
-      cube.assign(3 * n, options.epsilon);
-      extents_data = cube.data();
-    }
     Mesh mesh;
     if(const CF::Input_error error = build_mesh(vertices, faces, mesh))
     {
@@ -298,6 +290,12 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
       // The box pipeline also serves the ball asked for with box arrays: the library then
       // reports BOX_WITH_BALL.
       if(box || box_arrays)
+      {
+        // Without half-extents, the box is the tolerance's cube, as epsilon per axis gives.
+        std::vector<double> cube;
+        if(!box_half_extents)
+          cube.assign(3 * n, options.epsilon);
+        const double* extents_data = box_half_extents ? box_half_extents->data() : cube.data();
         result = call_library(
           faces_to_fair, mesh, options.epsilon,
           CFP::deviation_bound(box ? PMP::Deviation_bound::BOX : PMP::Deviation_bound::BALL,
@@ -305,6 +303,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
                                  Row_map<std::array<double, 3>, 3>{extents_data},
                                  CFP::vertex_box_center_map(
                                    Row_map<Point, 3>{box_centers ? box_centers->data() : vertices.data()}, np))));
+      }
       else
         result = call_library(faces_to_fair, mesh, options.epsilon, np);
       for(vertex_descriptor v : mesh.vertices())
