@@ -23,7 +23,6 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
-#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
