@@ -55,9 +55,9 @@ using Index_array = py::array_t<std::int64_t, py::array::c_style>;
 using Mask_array = py::array_t<bool, py::array::c_style>;
 using Triangle = std::array<std::size_t, 3>;
 
-// A read-only property map over the rows of a C-contiguous array of `Columns` numbers per
+// A read-only property map over the rows of a C-contiguous array of `Columns` elements per
 // vertex, vertex i of the mesh being row i: the per-vertex data of the named parameters.
-template <typename Value, int Columns>
+template <typename Value, int Columns, typename Element = double>
 struct Row_map
 {
   using key_type = vertex_descriptor;
@@ -65,11 +65,11 @@ struct Row_map
   using reference = Value;
   using category = boost::readable_property_map_tag;
 
-  const double* data = nullptr;
+  const Element* data = nullptr;
 
   friend Value get(const Row_map& map, vertex_descriptor v)
   {
-    const double* row = map.data + std::size_t(v.idx()) * Columns;
+    const Element* row = map.data + std::size_t(v.idx()) * Columns;
     if constexpr(Columns == 1)
       return row[0];
     else if constexpr(std::is_same_v<Value, Point>)
@@ -93,19 +93,6 @@ struct Array_map
 
   friend Value get(const Array_map& map, vertex_descriptor v) { return map.data[std::size_t(v.idx())]; }
   friend void put(const Array_map& map, vertex_descriptor v, const Value& value) { map.data[std::size_t(v.idx())] = value; }
-};
-
-// The vertices that must not move, from an array of bool.
-struct Mask_map
-{
-  using key_type = vertex_descriptor;
-  using value_type = bool;
-  using reference = bool;
-  using category = boost::readable_property_map_tag;
-
-  const bool* data = nullptr;
-
-  friend bool get(const Mask_map& map, vertex_descriptor v) { return map.data[std::size_t(v.idx())]; }
 };
 
 // Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the checks of
@@ -270,7 +257,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
         options.conjugate_gradient_iterations.value_or(defaults.cg_iterations),
         CFP::iteration_callback(std::ref(callback),
                                 CGAL::parameters::number_of_iterations(iterations).vertex_is_constrained_map(
-                                  Mask_map{fixed ? fixed->data() : none_fixed.get()})));
+                                  Row_map<bool, 1, bool>{fixed ? fixed->data() : none_fixed.get()})));
       const auto stopping = CFP::energy_decrease_threshold(
         options.energy_decrease_threshold.value_or(defaults.threshold),
         CFP::initial_smoothing_steps(options.initial_smoothing_steps.value_or(defaults.smoothing_steps), counts));
