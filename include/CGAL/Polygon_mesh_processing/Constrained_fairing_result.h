@@ -101,6 +101,8 @@ struct Constrained_fairing_result
   double initial_energy = 0;
   /// the objective's value on the output mesh, made of the same terms
   double final_energy = 0;
+  /// the bending energy of the input mesh, the paper's energy alone
+  double initial_bending_energy = 0;
   /// the bending energy of the output mesh
   double final_bending_energy = 0;
   /// the largest Euclidean distance of an output vertex to its input position

@@ -314,7 +314,7 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
       energy.add_fidelity(mu, [&bounds](std::size_t i) { return bounds.largest_size(i); }, anchor);
     }
     result.initial_energy = result.final_energy = energy.value(X0);
-    result.final_bending_energy = energy.bending_energy(X0);
+    result.initial_bending_energy = result.final_bending_energy = energy.bending_energy(X0);
     result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
     result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
     if(options.max_iterations > 0)
