@@ -24,26 +24,6 @@ using PMP::Deviation_bound;
 using test::Mesh;
 using test::Point;
 
-// The largest violation of the bound, computed as a user does, in double.
-double violation(const std::vector<Point>& out, const std::vector<Point>& in, double eps, Deviation_bound shape)
-{
-  double worst = 0;
-  for(std::size_t i = 0; i < out.size(); ++i)
-  {
-    if(shape == Deviation_bound::BALL)
-    {
-      const double d2 = CGAL::squared_distance(out[i], in[i]);
-      if(!(d2 <= eps * eps && std::sqrt(d2) <= eps))
-        worst = (std::max)(worst, std::sqrt(d2) - eps);
-    }
-    else
-      for(int c = 0; c < 3; ++c)
-        if(!(std::abs(out[i][c] - in[i][c]) <= eps))
-          worst = (std::max)(worst, std::abs(out[i][c] - in[i][c]) - eps);
-  }
-  return worst;
-}
-
 void check_known_minimum(Deviation_bound shape)
 {
   Mesh m = test::plane_patch(30);
@@ -56,7 +36,7 @@ void check_known_minimum(Deviation_bound shape)
     CFP::iteration_callback([&](std::size_t, double e) { energies.push_back(e); return true; },
                             CFP::deviation_bound(shape).number_of_iterations(200)));
   CHECK(r);
-  CHECK(violation(test::points(m), input, 0.3 * h, shape) == 0);
+  CHECK(test::bound_violation(test::points(m), input, 0.3 * h, shape) == 0);
   CHECK(std::is_sorted(energies.rbegin(), energies.rend()));
   CHECK(!energies.empty() && energies.back() == r.final_energy);
   // The plane has energy 0: 200 iterations must come within a ten-thousandth of the start.

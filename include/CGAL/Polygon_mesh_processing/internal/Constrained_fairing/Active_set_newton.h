@@ -8,6 +8,9 @@
 //     face of the feasible set that contains y, accept a point with lower energy than y.
 // The projected gradient method does step 1 only. Every accepted point lies in the feasible
 // set and has a lower energy than the one before, so the energy never rises.
+//
+// The energy is an Objective (see Projected_line_search.h), Fairing_objective by default; the
+// subspace step models its Hessian by the thin plate one of the mesh, whatever the objective.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_NEWTON_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_NEWTON_H
@@ -27,7 +30,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-template <typename Bound, typename SparseLinearSolver>
+template <typename Bound, typename SparseLinearSolver, typename Objective = Fairing_objective>
 class Active_set_newton
 {
 public:
@@ -37,7 +40,7 @@ public:
   // `energy` is the objective on `mesh`, set up on the input points. The thin plate model of
   // its Hessian leaves out the fidelity term of the accurate objective: a rougher model, which
   // the line search makes up for.
-  Active_set_newton(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy,
+  Active_set_newton(const Hinge_mesh& mesh, const Bound& bound, Objective& energy,
                     const SparseLinearSolver& solver)
     : m_mesh(mesh), m_bound(bound), m_energy(energy), m_solver(solver)
   {}
@@ -60,7 +63,7 @@ public:
       }
     }
 
-    double E = m_energy.value_and_gradient(X, m_G);
+    double E = m_energy.value_and_gradient(X, m_G, nullptr);
     report.initial_energy = E;
     Energy_history history(options);
     history.push(E);
@@ -93,7 +96,7 @@ public:
 
       if(newton)
       {
-        m_energy.value_and_gradient(m_Y, m_G);
+        m_energy.value_and_gradient(m_Y, m_G, nullptr);
         m_active.compute(m_bound, m_Y);
         if(!m_direction.compute(m_G, m_active, *m_hessian, options.cg_iterations, m_D, report.cg_iterations))
         {
@@ -112,7 +115,7 @@ public:
       }
       // m_Y is the accepted point: it becomes the iterate.
       X.swap(m_Y);
-      E = m_energy.value_and_gradient(X, m_G);
+      E = m_energy.value_and_gradient(X, m_G, nullptr);
       if(!history.next_iteration(E, callback, report))
         break;
     }
@@ -124,7 +127,7 @@ public:
 private:
   const Hinge_mesh& m_mesh;
   const Bound& m_bound;
-  Fairing_objective& m_energy;
+  Objective& m_energy;
   SparseLinearSolver m_solver;
   std::unique_ptr<Thin_plate_hessian<SparseLinearSolver> > m_hessian;
   Active_set<Bound> m_active;

@@ -27,6 +27,8 @@
 // If that search fails, the pairs are dropped and the iteration is redone along the
 // projected gradient; if that fails too, x is stationary up to rounding. Every accepted point
 // lies in the feasible set and has a lower energy than the one before.
+//
+// The energy is an Objective (see Projected_line_search.h), Fairing_objective by default.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
@@ -48,7 +50,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-template <typename Bound>
+template <typename Bound, typename Objective = Fairing_objective>
 class Projected_lbfgs
 {
 public:
@@ -64,7 +66,7 @@ public:
   // fewer iterations than a half, with nearly no rejected step; a fiftieth stalls.
   static constexpr double reach_fraction = 0.1;
 
-  Projected_lbfgs(const Bound& bound, Fairing_objective& energy) : m_bound(bound), m_energy(energy) {}
+  Projected_lbfgs(const Bound& bound, Objective& energy) : m_bound(bound), m_energy(energy) {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
   // cancels.
@@ -235,7 +237,7 @@ private:
   }
 
   const Bound& m_bound;
-  Fairing_objective& m_energy;
+  Objective& m_energy;
   Active_set<Bound> m_active;
   Projected_line_search m_search;
   // gradient, direction, next point and its gradient

@@ -11,11 +11,26 @@
 //  - backtrack(): for quasi-Newton directions, whose natural step is 1: shorten t from t0
 //    until the condition holds, evaluating the gradient (and the vertex scales) with the energy
 //    since the accepted point needs them next.
+//
+// The objective: the solvers (Projected_lbfgs.h, Active_set_newton.h) and this search are
+// templated on the function they minimize over n vertices, an `Objective` (the fairing's is
+// Fairing_objective.h; a quadratic with a known minimizer tests them). They call only:
+//  - double value(const Points& X): its value at X (n x 3);
+//  - double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales): its value,
+//    with its gradient written to G (resized to n x 3) and, if `scales` is not null (the
+//    quasi-Newton method only), scales->stiffness and scales->reach (Bending_energy.h),
+//    resized to n: per vertex, a positive estimate of the Hessian's diagonal, the same for its
+//    three coordinates (0 for a vertex that stays), and the length of a move known not to harm
+//    (each step moves a vertex by at most Projected_lbfgs::reach_fraction of it; infinity for
+//    no limit).
+// Both may change the objective's buffers, so it is passed by non-const reference. The value
+// must be non-negative: the solvers stop at 0 and judge a decrease relative to the value
+// (Energy_history in Solver_report.h).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LINE_SEARCH_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
@@ -45,8 +60,8 @@ public:
 
   // The paper's search from t0. `holds(energy, point)` is the descent condition. Returns
   // true and fills `accepted` on success.
-  template <typename Bound, typename Condition>
-  bool search(const Points& x, const Points& v, double t0, const Bound& bound, Fairing_objective& energy,
+  template <typename Bound, typename Objective, typename Condition>
+  bool search(const Points& x, const Points& v, double t0, const Bound& bound, Objective& energy,
               const Condition& holds, Accepted& accepted)
   {
     double t = t0;
@@ -78,11 +93,11 @@ public:
   // <g, v>: each rejected step t is followed by the minimizer of the quadratic through E0,
   // that slope and the rejected energy, kept within [t/10, t/2]. The trial points are written
   // straight to `accepted.point`, with the gradient and the vertex scales
-  // (Fairing_objective::value_and_gradient()) to G and scales, so that the accepted one needs no
+  // (the objective's value_and_gradient()) to G and scales, so that the accepted one needs no
   // copy; on failure, all three hold the last rejected trial.
-  template <typename Bound, typename Condition>
+  template <typename Bound, typename Objective, typename Condition>
   bool backtrack(const Points& x, const Points& v, double t0, double E0, double slope, const Bound& bound,
-                 Fairing_objective& energy, const Condition& holds, Accepted& accepted, Points& G, Vertex_scales& scales)
+                 Objective& energy, const Condition& holds, Accepted& accepted, Points& G, Vertex_scales& scales)
   {
     double t = t0;
     for(int k = 0; k < max_halvings; ++k)
@@ -111,8 +126,8 @@ public:
   std::size_t evaluations() const { return m_evaluations; }
 
 private:
-  template <typename Bound, typename Condition>
-  bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Fairing_objective& energy,
+  template <typename Bound, typename Objective, typename Condition>
+  bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Objective& energy,
                 const Condition& holds)
   {
     if(!projected_step_to(m_trial, x, t, v, bound)) // a step so long that it overflows is no candidate
