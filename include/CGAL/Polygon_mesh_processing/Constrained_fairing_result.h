@@ -88,12 +88,16 @@ struct Constrained_fairing_result
   std::string message;
   /// what is wrong with the input when `status` is `INVALID_INPUT`, `NONE` otherwise
   Constrained_fairing_defect defect = Constrained_fairing_defect::NONE;
-  /// iterations done: accepted steps of the quasi-Newton method (the default); a Cauchy step
-  /// followed by a Newton step for `ACTIVE_SET_NEWTON`; a Cauchy step for `PROJECTED_GRADIENT`
+  /// iterations on the path to the result, as the `iteration_callback` heard them: accepted
+  /// steps of the quasi-Newton method (the default); a Cauchy step followed by a Newton step
+  /// for `ACTIVE_SET_NEWTON`; a Cauchy step for `PROJECTED_GRADIENT`. The steps of a round of
+  /// fold repair that do not get below the objective reached before it are not on that path
+  /// and count only in `number_of_energy_evaluations`.
   std::size_t number_of_iterations = 0;
   /// conjugate gradient iterations over all Newton steps (`ACTIVE_SET_NEWTON` only)
   std::size_t number_of_cg_iterations = 0;
-  /// evaluations of the energy, with or without its gradient: the main cost of the default method
+  /// evaluations of the energy, with or without its gradient, over all the work done: the main
+  /// cost of the default method
   std::size_t number_of_energy_evaluations = 0;
   /// the objective's value on the input mesh: its bending energy plus the barrier against
   /// slivers (`sliver_barrier_weight`), plus the fidelity term for
@@ -116,8 +120,8 @@ struct Constrained_fairing_result
   /// sum of the neighbours' area-weighted normals), among those with a vertex that could move
   std::size_t number_of_folded_faces = 0;
   /// the folded faces that the fold repair undid: after the descent, the vertices of the folds
-  /// and their neighbours are re-seeded and the descent resumes, kept if the objective is not
-  /// higher and fewer faces are folded
+  /// and their neighbours are re-seeded and the descent resumes, kept if the objective ends
+  /// lower, and repeated (three rounds at most) while fewer faces are folded
   std::size_t number_of_unfolded_faces = 0;
   /// the interior edges left out of the energy because one of their two triangles is
   /// degenerate (of nearly zero area) in the input

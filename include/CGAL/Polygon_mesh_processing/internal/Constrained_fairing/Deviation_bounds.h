@@ -54,30 +54,32 @@ inline double robust_norm(const Eigen::Vector3d& d)
 class Vertex_sizes
 {
 public:
-  explicit Vertex_sizes(double uniform) : m_uniform(uniform) {}
-  explicit Vertex_sizes(std::vector<double> per_vertex) : m_uniform(0), m_per_vertex(std::move(per_vertex)) {}
+  explicit Vertex_sizes(double uniform) : m_uniform(uniform), m_largest(uniform) {}
+  explicit Vertex_sizes(std::vector<double> per_vertex)
+    : m_uniform(0), m_largest(per_vertex.empty() ? 0 : *std::max_element(per_vertex.begin(), per_vertex.end())),
+      m_per_vertex(std::move(per_vertex))
+  {}
 
   double operator[](std::size_t i) const { return m_per_vertex.empty() ? m_uniform : m_per_vertex[i]; }
-
-  double largest() const
-  {
-    return m_per_vertex.empty() ? m_uniform : *std::max_element(m_per_vertex.begin(), m_per_vertex.end());
-  }
+  double largest() const { return m_largest; }
 
 private:
-  double m_uniform;
+  double m_uniform, m_largest;
   std::vector<double> m_per_vertex;
 };
 
-// What the bounds share: the input points, the largest size, and the loops over all vertices.
+// What the bounds share: the input points, each vertex's size (the radius of its ball, the
+// largest half-extent of its box), and the loops over all vertices.
 template <typename Bound>
 class Deviation_bound_base
 {
 public:
-  Deviation_bound_base(const Points& X0, double largest) : m_X0(X0), m_largest(largest) {}
+  Deviation_bound_base(const Points& X0, Vertex_sizes size) : m_X0(X0), m_size(std::move(size)) {}
 
-  // The largest radius or half-extent of any vertex (the solvers' first step).
-  double largest_size() const { return m_largest; }
+  // Vertex i's size; 0 pins it.
+  double size(std::size_t i) const { return m_size[i]; }
+  // The largest size of any vertex (the solvers' first step).
+  double largest_size() const { return m_size.largest(); }
   const Points& input_points() const { return m_X0; }
 
   // X = P(X), the closest point of Omega (up to the last bit, which is chosen inwards)
@@ -125,7 +127,7 @@ protected:
   }
 
   const Points& m_X0;
-  double m_largest;
+  Vertex_sizes m_size;
 };
 
 // |p_i - p0_i| <= r_i
@@ -137,14 +139,11 @@ public:
   using Face = Eigen::Vector3d;
 
   Ball_bound(const Points& X0, double eps) : Ball_bound(X0, Vertex_sizes(eps)) {}
-  Ball_bound(const Points& X0, Vertex_sizes radius)
-    : Deviation_bound_base<Ball_bound>(X0, radius.largest()), m_radius(std::move(radius))
-  {
-  }
+  Ball_bound(const Points& X0, Vertex_sizes radius) : Deviation_bound_base<Ball_bound>(X0, std::move(radius)) {}
 
   bool contains(const Points& X, std::size_t i) const
   {
-    return is_in_ball(X.data() + 3 * i, m_X0.data() + 3 * i, m_radius[i]);
+    return is_in_ball(X.data() + 3 * i, m_X0.data() + 3 * i, m_size[i]);
   }
 
   using Deviation_bound_base<Ball_bound>::project;
@@ -159,7 +158,7 @@ public:
     // outside; aim a little inside then, by a slack that starts at that rounding error. The
     // centre, reached at worst, is inside. An offset that overflows (X must be finite, not
     // X - c) goes to the centre.
-    const double r = robust_norm(d), eps = m_radius[i];
+    const double r = robust_norm(d), eps = m_size[i];
     if(r < std::numeric_limits<double>::infinity())
       for(double slack = 0; slack < eps; slack = (slack == 0) ? rounding_error(i, eps) : 2 * slack)
       {
@@ -174,7 +173,7 @@ public:
   bool is_on_boundary(const Points& X, std::size_t i, Face& face) const
   {
     const Eigen::Vector3d d = point(X, i) - point(m_X0, i);
-    const double r = robust_norm(d), eps = m_radius[i];
+    const double r = robust_norm(d), eps = m_size[i];
     if(r < eps - 8 * rounding_error(i, eps))
       return false;
     face = r > 0 ? Eigen::Vector3d(d / r) : Eigen::Vector3d::Zero();
@@ -194,9 +193,6 @@ public:
     else
       v -= face.dot(v) * face;
   }
-
-private:
-  Vertex_sizes m_radius;
 };
 
 // |p_ik - c_ik| <= h_ik for each coordinate k, c_i the box's centre (by default p0_i)
@@ -217,12 +213,13 @@ public:
   // Eigen::Vector3d.
   template <typename HalfExtents, typename Centre>
   Box_bound(const Points& X0, const HalfExtents& half_extents, const Centre& centre)
-    : Deviation_bound_base<Box_bound>(X0, 0), m_lower(X0.rows(), 3), m_upper(X0.rows(), 3)
+    : Deviation_bound_base<Box_bound>(X0, Vertex_sizes(0)), m_lower(X0.rows(), 3), m_upper(X0.rows(), 3)
   {
-    for(std::size_t i = 0; i < static_cast<std::size_t>(X0.rows()); ++i)
+    std::vector<double> largest(static_cast<std::size_t>(X0.rows()));
+    for(std::size_t i = 0; i < largest.size(); ++i)
     {
       const Eigen::Vector3d h = half_extents(i), c = centre(i);
-      m_largest = (std::max)(m_largest, h.maxCoeff());
+      largest[i] = h.maxCoeff();
       for(int k = 0; k < 3; ++k)
       {
         // the closest doubles to c -+ h whose difference to c, as computed, is <= h
@@ -235,6 +232,7 @@ public:
         m_upper(Eigen::Index(i), k) = hi;
       }
     }
+    m_size = Vertex_sizes(std::move(largest));
   }
 
   bool contains(const Points& X, std::size_t i) const

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the named parameters ask of each vertex that takes part in the fairing, read and
-// checked before anything is done, then turned into the solver's Ball_bound or Box_bound:
+// checked before anything is done, then turned into the solver's Ball_bound or Box_bound,
+// which holds it from then on:
 //  - its tolerance t_i = min(epsilon, vertex_tolerance_map(v)), or 0 for a fixed vertex;
 //  - for the box, its half-extents min(t_i, H_i) per axis, H_i from vertex_box_half_extents_map
 //    or box_half_extents (t_i alone without them), around vertex_box_center_map(v) or the
@@ -36,11 +37,11 @@ namespace Constrained_fairing {
 class Vertex_bounds
 {
 public:
-  // Reads the named parameters for the vertices of `part` (a Fairing_part: size(),
-  // is_fixed(k), number(k) that names vertex k in messages, for_each_vertex(f(k, v))). Returns
-  // the first defect (Input_check.h), none if every value is usable.
+  // Reads the named parameters for the vertices of `part` (Fairing_part.h), storing vertex k
+  // of the part at rank[k], its place in the solver's order. Returns the first defect
+  // (Input_check.h) in the order of the part, none if every value is usable.
   template <typename Part, typename NamedParameters>
-  Input_error read(const Part& part, double epsilon, const NamedParameters& np)
+  Input_error read(const Part& part, const std::vector<Index>& rank, double epsilon, const NamedParameters& np)
   {
     using parameters::get_parameter;
     using parameters::is_default_parameter;
@@ -83,9 +84,10 @@ public:
     part.for_each_vertex([&](std::size_t k, auto v) {
       if(error)
         return;
+      const std::size_t i = rank[k];
       if(part.is_fixed(k))
       {
-        m_tolerance[k] = 0;
+        m_tolerance[i] = 0;
         return;
       }
       const std::string vertex = "vertex " + std::to_string(part.number(k));
@@ -95,22 +97,22 @@ public:
         if(!(t >= 0) || !std::isfinite(t))
           error = {Constrained_fairing_defect::INVALID_TOLERANCE,
                    vertex + " has a negative, NaN or infinite tolerance (" + std::to_string(t) + ")"};
-        m_tolerance[k] = (std::min)(t, epsilon);
+        m_tolerance[i] = (std::min)(t, epsilon);
       }
       if constexpr(has_extents_map)
       {
         const auto& h = get(get_parameter(np, vertex_box_half_extents_map), v);
         for(int c = 0; c < 3; ++c)
-          m_extents(Eigen::Index(k), c) = CGAL::to_double(h[c]);
-        if(!error && !extents_error(point(m_extents, k)).empty())
+          m_extents(Eigen::Index(i), c) = CGAL::to_double(h[c]);
+        if(!error && !extents_error(point(m_extents, i)).empty())
           error = {Constrained_fairing_defect::INVALID_BOX_EXTENTS,
-                   "the box half-extents of " + vertex + " " + extents_error(point(m_extents, k))};
+                   "the box half-extents of " + vertex + " " + extents_error(point(m_extents, i))};
       }
       if constexpr(has_centre_map)
       {
         const auto& c = get(get_parameter(np, vertex_box_center_map), v);
-        point(m_centre, k) = Eigen::Vector3d(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
-        if(!error && !point(m_centre, k).allFinite())
+        point(m_centre, i) = Eigen::Vector3d(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
+        if(!error && !point(m_centre, i).allFinite())
           error = {Constrained_fairing_defect::INVALID_BOX_CENTER,
                    "the box centre of " + vertex + " has a NaN or infinite coordinate"};
       }
@@ -120,35 +122,10 @@ public:
 
   bool is_box() const { return m_box; }
 
-  // Renumbers the vertices: k becomes rank[k].
-  void permute(const std::vector<Index>& rank)
+  // The bound on the input points X0 (in the solver's order); the ball takes over the data read.
+  Ball_bound ball(const Points& X0) &&
   {
-    if(!m_tolerance.empty())
-    {
-      std::vector<double> t(m_tolerance.size());
-      for(std::size_t k = 0; k < t.size(); ++k)
-        t[rank[k]] = m_tolerance[k];
-      m_tolerance.swap(t);
-    }
-    permute_rows(rank, m_extents);
-    permute_rows(rank, m_centre);
-  }
-
-  // Vertex i's tolerance.
-  double tolerance(std::size_t i) const { return m_tolerance.empty() ? m_epsilon : m_tolerance[i]; }
-
-  // Vertex i's largest size: its tolerance, or its box's largest half-extent.
-  double largest_size(std::size_t i) const
-  {
-    if(!m_box)
-      return tolerance(i);
-    const Eigen::Vector3d h = m_extents.rows() > 0 ? Eigen::Vector3d(point(m_extents, i)) : m_uniform_extents;
-    return h.cwiseMin(tolerance(i)).maxCoeff();
-  }
-
-  Ball_bound ball(const Points& X0) const
-  {
-    return m_tolerance.empty() ? Ball_bound(X0, m_epsilon) : Ball_bound(X0, Vertex_sizes(m_tolerance));
+    return m_tolerance.empty() ? Ball_bound(X0, m_epsilon) : Ball_bound(X0, Vertex_sizes(std::move(m_tolerance)));
   }
 
   Box_bound box(const Points& X0) const
@@ -172,15 +149,7 @@ private:
            std::to_string(h[2]) + ")";
   }
 
-  static void permute_rows(const std::vector<Index>& rank, Points& P)
-  {
-    if(P.rows() == 0)
-      return;
-    Points sorted(P.rows(), 3);
-    for(std::size_t k = 0; k < rank.size(); ++k)
-      point(sorted, rank[k]) = point(P, k);
-    P.swap(sorted);
-  }
+  double tolerance(std::size_t i) const { return m_tolerance.empty() ? m_epsilon : m_tolerance[i]; }
 
   bool m_box = false;
   double m_epsilon = 0;
