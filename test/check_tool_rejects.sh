@@ -26,7 +26,7 @@ expect() {
 
 out=$work/faired.off
 expect "cannot read .*no_such_mesh.off" --eps 0.1 "$bad/no_such_mesh.off" "$out"
-expect "empty.off: the mesh is empty" --eps 0.1 "$bad/empty.off" "$out"
+expect "the mesh is empty; nothing written" --eps 0.1 "$bad/empty.off" "$out"
 expect "the mesh is empty" --eps 0.1 "$bad/not_a_mesh.stl" "$out"
 expect "the mesh has no faces" --eps 0.1 "$bad/points_only.off" "$out"
 expect "edge between vertices 0 and 1 has 3 faces" --eps 0.1 "$bad/non_manifold_edge.off" "$out"
@@ -40,6 +40,7 @@ expect "box-extents must be three non-negative numbers" --box-extents 1,2 "$data
 expect "box-extents must be three non-negative numbers" --box-extents 1,-2,1 "$data/head.off" "$out"
 expect "box-extents needs a value" "$data/head.off" "$out" --box-extents
 expect "needs a PLY input" --radius-from-property accuracy "$data/head.off" "$out"
+expect "nan.ply has no float or double vertex property accuracy" --radius-from-property accuracy "$bad/nan.ply" "$out"
 expect "too many arguments" "$data/head.off" "$out" extra
 expect "no input mesh" --eps 0.1
 expect "cannot estimate the noise level" --eps auto "$bad/zero_area.off" "$out"

@@ -21,7 +21,6 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/version_macros.h>
 
 #include <algorithm>
 #include <array>
@@ -30,7 +29,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -80,6 +78,7 @@ options:
 using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Captured_cerr;
 using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::make_triangle_mesh;
 using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
+using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::read_PLY_soup_file;
 using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::read_polygon_soup_file;
 
 // "0.002" is absolute, "0.25h" is 0.25 times the mean edge length. Returns false if malformed.
@@ -105,13 +104,18 @@ bool parse_epsilon(const std::string& text, const Mesh& mesh, double& epsilon)
 
 using Polygon = std::vector<std::size_t>;
 
-// Reads a mesh from any format CGAL reads, its faces triangulated, `triangulated` of them.
+// Reads a mesh from any format CGAL reads, its faces triangulated, `triangulated` of them, and
+// with a `property` name, that vertex property of a PLY file into `values`, one per vertex.
 // Returns an empty string or the reason it failed.
-std::string read_mesh(const std::string& in, Mesh& mesh, std::size_t& triangulated)
+std::string read_mesh(const std::string& in, const std::string& property, Mesh& mesh, std::size_t& triangulated,
+                      std::vector<double>& values)
 {
   std::vector<K::Point_3> points;
   std::vector<Polygon> polygons;
-  const std::string error = read_polygon_soup_file(in, points, polygons);
+  if(!property.empty() && std::filesystem::path(in).extension() != ".ply")
+    return "--radius-from-property needs a PLY input (" + in + ")";
+  const std::string error = property.empty() ? read_polygon_soup_file(in, points, polygons)
+                                             : read_PLY_soup_file(in, property, points, polygons, values);
   return error.empty() ? make_triangle_mesh(in, points, polygons, mesh, triangulated) : error;
 }
 
@@ -148,39 +152,6 @@ bool parse_extents(const std::string& text, std::array<double, 3>& h)
   if(!(in >> h[0] >> comma1 >> h[1] >> comma2 >> h[2]) || comma1 != ',' || comma2 != ',' || !in.eof())
     return false;
   return std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x) && x >= 0; });
-}
-
-// The vertex property `name` of `m` with values of type T, if there is one (CGAL 6 returns an
-// optional map, CGAL 5 a pair).
-template <typename T>
-std::optional<Mesh::Property_map<vertex_descriptor, T> > find_property(const Mesh& m, const std::string& name)
-{
-#if CGAL_VERSION_MAJOR >= 6
-  return m.property_map<vertex_descriptor, T>(name);
-#else
-  const auto found = m.property_map<vertex_descriptor, T>(name);
-  return found.second ? std::make_optional(found.first) : std::nullopt;
-#endif
-}
-
-// Reads the vertex property `name` of the PLY file `in` into `radius`, by vertex number.
-std::string read_radius_property(const std::string& in, const std::string& name, const Mesh& mesh,
-                                 Mesh::Property_map<vertex_descriptor, double>& radius)
-{
-  Mesh with_properties;
-  std::ifstream stream(in, std::ios::binary);
-  Captured_cerr cgal;
-  if(std::filesystem::path(in).extension() != ".ply" || !CGAL::IO::read_PLY(stream, with_properties))
-    return "--radius-from-property needs a PLY input (" + in + ")";
-  if(num_vertices(with_properties) != num_vertices(mesh))
-    return "the vertices of " + in + " read as a PLY mesh differ from its points";
-  const auto as_double = find_property<double>(with_properties, "v:" + name);
-  const auto as_float = find_property<float>(with_properties, "v:" + name);
-  if(!as_double && !as_float)
-    return in + " has no float or double vertex property " + name;
-  for(vertex_descriptor v : vertices(mesh))
-    put(radius, v, as_double ? get(*as_double, v) : double(get(*as_float, v)));
-  return std::string();
 }
 
 struct Options
@@ -282,6 +253,46 @@ private:
   double m_shown = -1;
 };
 
+// The per-vertex and box parameters the user asked for; the others are not passed at all.
+struct Asked
+{
+  std::optional<Mesh::Property_map<vertex_descriptor, double> > tolerance;
+  std::optional<Mesh::Property_map<vertex_descriptor, bool> > fixed;
+  std::optional<std::array<double, 3> > extents;
+  bool box = false;
+};
+
+// The library's call with `np` and the bound asked for: a box of the given extents, the cube
+// of the tolerance, or the default ball.
+template <typename NamedParameters>
+PMP::Constrained_fairing_result fair_with_bound(Mesh& mesh, double epsilon, const Asked& asked,
+                                                const NamedParameters& np)
+{
+  if(asked.extents)
+    return PMP::constrained_fairing(mesh, epsilon, CFP::box_half_extents(*asked.extents, np));
+  if(asked.box)
+    return PMP::constrained_fairing(mesh, epsilon, CFP::deviation_bound(PMP::Deviation_bound::BOX, np));
+  return PMP::constrained_fairing(mesh, epsilon, np);
+}
+
+template <typename NamedParameters>
+PMP::Constrained_fairing_result fair_with_fixed(Mesh& mesh, double epsilon, const Asked& asked,
+                                                const NamedParameters& np)
+{
+  if(asked.fixed)
+    return fair_with_bound(mesh, epsilon, asked, np.vertex_is_constrained_map(*asked.fixed));
+  return fair_with_bound(mesh, epsilon, asked, np);
+}
+
+template <typename NamedParameters>
+PMP::Constrained_fairing_result fair_with_tolerance(Mesh& mesh, double epsilon, const Asked& asked,
+                                                    const NamedParameters& np)
+{
+  if(asked.tolerance)
+    return fair_with_fixed(mesh, epsilon, asked, CFP::vertex_tolerance_map(*asked.tolerance, np));
+  return fair_with_fixed(mesh, epsilon, asked, np);
+}
+
 int main(int argc, char* argv[])
 {
   const Options options = parse_options(argc, argv);
@@ -306,16 +317,10 @@ int main(int argc, char* argv[])
     return fail("--box-extents must be three non-negative numbers HX,HY,HZ (got " + options.extents + ")");
   Mesh mesh;
   std::size_t triangulated = 0;
-  const std::string read_error = read_mesh(in, mesh, triangulated);
+  std::vector<double> tolerances;
+  const std::string read_error = read_mesh(in, options.radius_property, mesh, triangulated, tolerances);
   if(!read_error.empty())
     return fail(read_error);
-  auto radius = mesh.add_property_map<vertex_descriptor, double>("v:radius", 0.).first;
-  if(!options.radius_property.empty())
-  {
-    const std::string error = read_radius_property(in, options.radius_property, mesh, radius);
-    if(!error.empty())
-      return fail(error);
-  }
 
   // EPS caps every size; without it, the largest size the options give, or 0.25h.
   std::string eps_text = options.eps.empty() ? "0.25h" : options.eps;
@@ -337,45 +342,49 @@ int main(int argc, char* argv[])
   else
   {
     epsilon = options.extents.empty() ? 0 : *std::max_element(extents.begin(), extents.end());
-    for(vertex_descriptor v : vertices(mesh))
-      if(!options.radius_property.empty() && get(radius, v) > epsilon)
-        epsilon = get(radius, v);
+    for(double t : tolerances)
+      epsilon = (std::max)(epsilon, t);
     eps_text = "the largest size given";
   }
   if(triangulated > 0)
     std::cout << "note: " << triangulated << " faces with more than three vertices were triangulated" << std::endl;
 
-  auto fixed = mesh.add_property_map<vertex_descriptor, bool>("v:fixed", false).first;
-  if(options.fixed_border)
+  // Only what the user asked for is passed: the plain call takes the library's own defaults.
+  Asked asked;
+  asked.box = options.box;
+  if(!options.extents.empty())
+    asked.extents = extents;
+  if(!options.radius_property.empty())
+  {
+    asked.tolerance = mesh.add_property_map<vertex_descriptor, double>("v:tolerance", 0.).first;
     for(vertex_descriptor v : vertices(mesh))
-      put(fixed, v, static_cast<bool>(CGAL::is_border(v, mesh)));
+      put(*asked.tolerance, v, tolerances[v.idx()]);
+  }
+  if(options.fixed_border)
+  {
+    asked.fixed = mesh.add_property_map<vertex_descriptor, bool>("v:fixed", false).first;
+    for(vertex_descriptor v : vertices(mesh))
+      put(*asked.fixed, v, static_cast<bool>(CGAL::is_border(v, mesh)));
+  }
   auto deviation = mesh.add_property_map<vertex_descriptor, double>("v:deviation", 0.).first;
   auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
-  // Every option is passed, each in its neutral form when not asked for: a tolerance of
-  // epsilon for all, the cube of half-side epsilon.
-  if(options.radius_property.empty())
-    for(vertex_descriptor v : vertices(mesh))
-      put(radius, v, epsilon);
-  const std::array<double, 3> half_extents =
-    options.extents.empty() ? std::array<double, 3>{epsilon, epsilon, epsilon} : extents;
   Progress progress;
-  const auto common = CFP::iteration_callback(
-    std::ref(progress),
-    CFP::fairing_objective(
-      options.accurate ? PMP::Constrained_fairing_objective::ACCURATE : PMP::Constrained_fairing_objective::FAIREST,
-      CFP::vertex_tolerance_map(radius, CFP::vertex_deviation_map(
-                                          deviation, CFP::vertex_at_bound_map(at_bound).vertex_is_constrained_map(fixed)))));
-  const bool box = options.box || !options.extents.empty();
-  const PMP::Constrained_fairing_result result =
-    box ? PMP::constrained_fairing(mesh, epsilon, CFP::box_half_extents(half_extents, common))
-        : PMP::constrained_fairing(mesh, epsilon, common);
+  const PMP::Constrained_fairing_result result = fair_with_tolerance(
+    mesh, epsilon, asked,
+    CFP::iteration_callback(
+      std::ref(progress),
+      CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
+                                              : PMP::Constrained_fairing_objective::FAIREST,
+                             CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound)))));
   progress.done();
   if(!result)
     return fail(result.message + "; nothing written");
 
-  // Only a PLY output carries the per-vertex results; the helper maps go.
-  mesh.remove_property_map(radius);
-  mesh.remove_property_map(fixed);
+  // Only a PLY output carries the per-vertex results; the maps given to the library go.
+  if(asked.tolerance)
+    mesh.remove_property_map(*asked.tolerance);
+  if(asked.fixed)
+    mesh.remove_property_map(*asked.fixed);
   const bool ply = std::filesystem::path(out).extension() == ".ply";
   std::vector<std::uint8_t> flags;
   for(vertex_descriptor v : vertices(mesh))
@@ -394,7 +403,9 @@ int main(int argc, char* argv[])
   if(!write_error.empty())
     return fail(write_error + "; nothing written");
 
-  // The report, one line.
+  // The report, one line. The bending energy is the paper's measure of fairness; the objective
+  // minimized adds the barrier against slivers and, for --accurate, the fidelity term.
+  const bool box = options.box || !options.extents.empty();
   std::cout << in << " -> " << out << (ply ? " (with deviation and at_bound)" : "") << ": " << num_vertices(mesh)
             << " vertices; eps " << epsilon << " (" << eps_text << "), "
             << (box ? "box" + (options.extents.empty() ? std::string() : " " + options.extents) : std::string("ball"))
@@ -402,9 +413,11 @@ int main(int argc, char* argv[])
             << (options.fixed_border ? ", border fixed" : "") << (options.accurate ? ", accurate" : "") << "; "
             << result.number_of_iterations << " iterations ("
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
-            << "); energy " << result.initial_energy << " -> " << result.final_bending_energy << "; deviation at most "
-            << result.max_deviation << ", " << result.number_of_vertices_at_bound << " at the bound, "
-            << result.number_of_fixed_vertices << " fixed";
+            << "); bending energy " << result.initial_bending_energy << " -> " << result.final_bending_energy;
+  if(result.initial_energy != result.initial_bending_energy || result.final_energy != result.final_bending_energy)
+    std::cout << ", objective " << result.initial_energy << " -> " << result.final_energy;
+  std::cout << "; deviation at most " << result.max_deviation << ", " << result.number_of_vertices_at_bound
+            << " at the bound, " << result.number_of_fixed_vertices << " fixed";
   if(result.number_of_unfolded_faces > 0 || result.number_of_folded_faces > 0)
     std::cout << ", " << result.number_of_unfolded_faces << " faces unfolded, " << result.number_of_folded_faces
               << " left folded";

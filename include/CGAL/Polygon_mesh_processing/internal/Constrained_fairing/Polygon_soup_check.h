@@ -1,13 +1,15 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The input contract of constrained_fairing() for a polygon soup (points and faces as lists of
-// point indices, as read from a file or given as arrays), checked before the soup is turned
-// into a halfedge mesh: CGAL's polygon_soup_to_polygon_mesh() requires a soup that
-// is_polygon_soup_a_polygon_mesh() accepts, and this check accepts no other, but names the
-// defect, with the first face or vertex concerned, in the words of mesh_error() (Input_check.h).
-// Its sorts are counting sorts by vertex, so that it costs little beside the fairing of a large
-// mesh.
+// What a polygon soup (points and faces as lists of point indices, as read from a file or given
+// as arrays) must be for CGAL's polygon_soup_to_polygon_mesh() to make a halfedge mesh of it:
+// faces of three or more distinct existing points, as is_polygon_soup_a_polygon_mesh() demands
+// (edges of at most two faces, consistently oriented, vertices of one fan), in 32-bit indices.
+// A soup with a defect of these cannot become the mesh on which constrained_fairing() would
+// name it, so it is named here, with the first face or vertex concerned, in the words of
+// mesh_error() (Input_check.h). Every other defect, an empty mesh or one without faces among
+// them, is left to constrained_fairing(). The sorts are counting sorts by vertex, so that the
+// check costs little beside the fairing of a large mesh.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POLYGON_SOUP_CHECK_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POLYGON_SOUP_CHECK_H
@@ -33,10 +35,6 @@ Input_error polygon_soup_error(std::size_t number_of_points, const PolygonRange&
 {
   using D = Constrained_fairing_defect;
   const std::size_t m = static_cast<std::size_t>(std::size(polygons));
-  if(number_of_points == 0)
-    return {D::EMPTY_MESH, "the mesh is empty"};
-  if(m == 0)
-    return {D::NO_FACES, "the mesh has no faces"};
 
   // The corners, numbered face by face; corner_start[f] is the first corner of face f.
   std::vector<std::size_t> corner_start(m + 1, 0);
@@ -58,7 +56,7 @@ Input_error polygon_soup_error(std::size_t number_of_points, const PolygonRange&
     }
     corner_start[f + 1] = corner_start[f] + k;
   }
-  // The solver's 32-bit indices (Points.h) number the vertices and the corners below.
+  // The arrays below, like the solver's (Points.h), number the vertices and corners in 32 bits.
   if(number_of_points > (std::numeric_limits<Index>::max)() || corner_start[m] >= (std::numeric_limits<Index>::max)())
     return {D::MESH_TOO_LARGE, "the mesh is too large: at most " + std::to_string((std::numeric_limits<Index>::max)()) +
                                  " vertices and face corners"};
