@@ -46,17 +46,20 @@ public:
   {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
-  // cancels. On LINEAR_SOLVER_FAILED, X holds an intermediate iterate: discard it.
+  // cancels. On LINEAR_SOLVER_FAILED, X holds an intermediate iterate: discard it. The model
+  // Hessian depends only on the input points: it is factorized by the first run, and the
+  // later ones (fold repair) reuse it.
   template <typename Callback>
   Solver_report run(Points& X, const Solver_options& options, const Callback& callback)
   {
     Solver_report report;
     const bool newton = !options.cauchy_steps_only;
-    if(newton)
+    if(newton && !m_hessian)
     {
       m_hessian = std::make_unique<Thin_plate_hessian<SparseLinearSolver> >(m_mesh, m_bound.input_points(), m_solver);
       if(!m_hessian->factorize())
       {
+        m_hessian.reset();
         report.status = Constrained_fairing_status::LINEAR_SOLVER_FAILED;
         report.message = "the sparse linear solver could not factorize the stiffness matrix";
         return report;
