@@ -5,8 +5,9 @@
 // from the input (no smoothed start, which opens most folds by itself). The descent keeps
 // some folds (no step flips a triangle), as a run capped before the repair shows; the full call
 // must leave none with the default method (a tenth at most with the Newton method), report the
-// counts (checked against an independent count), keep the bound exact and the objective never
-// rising as the callback hears it, and respect number_of_iterations. The full call gets twice
+// counts (checked against an independent count), keep the bound exact and respect
+// number_of_iterations. The callback hears the path to the result only: numbers 1, 2, ... up
+// to number_of_iterations, an objective that never rises and ends at final_energy. The full call gets twice
 // the default number of iterations: from this raw input, where many triangles start as slivers,
 // the descent alone takes about 1100 quasi-Newton or 350 Newton iterations (and ends at half
 // the energy it reached without the barrier against slivers), and the repair needs some left.
@@ -71,7 +72,7 @@ int main()
     const auto r = PMP::constrained_fairing(
       repaired, eps,
       CFP::initial_smoothing_steps(0, CFP::fairing_method(method, CFP::iteration_callback([&](std::size_t it, double e) {
-                                                             monotone = monotone && e <= previous && it > last_iteration;
+                                                             monotone = monotone && e <= previous && it == last_iteration + 1;
                                                              previous = e;
                                                              last_iteration = it;
                                                              return true;
@@ -93,6 +94,8 @@ int main()
     else
       CHECK(10 * r.number_of_folded_faces <= r.number_of_folded_faces + r.number_of_unfolded_faces);
     CHECK(monotone);
+    CHECK(last_iteration == r.number_of_iterations);
+    CHECK(previous == r.final_energy);
     CHECK(r.final_energy <= r.initial_energy);
     CHECK(r.number_of_iterations <= budget);
     CHECK(test::bound_violation(test::points(repaired), input, eps, PMP::Deviation_bound::BALL) <= 0);
