@@ -14,8 +14,9 @@
 // wildly under tiny moves: a hinge containing it has no meaningful dihedral angle, and its
 // steep energy would throttle every step of the descent. So:
 //  - hinges with a triangle that is degenerate in the input, of doubled area at most 1e-6 of
-//    its longest squared edge (an angle of about a micro radian), are left out of the energy.
-//    Their vertices are still faired by their other hinges.
+//    its longest squared edge (an angle of about a micro radian: degenerate_triangles() in
+//    Mesh_operators.h), are left out of the energy. Their vertices are still faired by their
+//    other hinges.
 //  - the remaining triangles' doubled areas and normals are regularized, so that triangles
 //    degenerating during the descent cannot produce a NaN: with N the cross product of two
 //    edges, l = sqrt(|N|^2 + delta^2) and n = N / l, delta 1e-9 of the input's mean doubled
@@ -39,8 +40,10 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_scales.h>
 
 #include <Eigen/Geometry>
 
@@ -56,54 +59,25 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// What the quasi-Newton method needs to know of each vertex besides the gradient.
-struct Vertex_scales
-{
-  // along the surface normal: the Gauss-Newton diagonal (see value_and_gradient())
-  Eigen::VectorXd stiffness;
-  // the smallest height of the vertex over the opposite edge in its triangles: a move shorter
-  // than that cannot flip or collapse one of them
-  Eigen::VectorXd reach;
-
-  void swap(Vertex_scales& other)
-  {
-    stiffness.swap(other.stiffness);
-    reach.swap(other.reach);
-  }
-};
-
 class Bending_energy
 {
 public:
   // Relative to the input's mean doubled area.
   static constexpr double area_regularization = 1e-9;
-  // Relative to a triangle's longest squared edge.
-  static constexpr double degenerate_area = 1e-6;
   // Vertices per tile: with their triangles and hinges, under a megabyte of scratch, which
   // stays in a core's cache.
   static constexpr std::size_t tile_size = 4096;
 
   // X0: the input points, which fix the regularization and the hinges left out.
-  Bending_energy(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_scale(unit_scale(X0))
+  Bending_energy(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_unit_scaled(X0)
   {
-    scale_points(X0);
-    const Points& P = *m_points;
+    const Points& P = m_unit_scaled(X0);
     const std::size_t nt = m_mesh.triangles.size();
     double sum = 0; // of the unregularized doubled areas
-    std::vector<bool> degenerate(nt);
     for(std::size_t f = 0; f < nt; ++f)
-    {
-      const auto& v = m_mesh.triangles[f];
-      const Eigen::Vector3d p0 = point(P, v[0]);
-      const double l = (point(P, v[1]) - p0).cross(point(P, v[2]) - p0).norm();
-      sum += l;
-      double longest = 0;
-      for(int k = 0; k < 3; ++k)
-        longest = (std::max)(longest, (point(P, v[k]) - point(P, v[(k + 1) % 3])).squaredNorm());
-      degenerate[f] = !(l > degenerate_area * longest);
-    }
+      sum += area_normal(m_mesh, P, f).norm();
     m_delta = nt == 0 ? 0 : area_regularization * sum / double(nt);
-    build_tiles(degenerate);
+    build_tiles(degenerate_triangles(m_mesh, P));
   }
 
   // False if the input has no area at all (in double): then the regularization vanishes
@@ -115,7 +89,7 @@ public:
 
   double value(const Points& X)
   {
-    scale_points(X);
+    m_points = &m_unit_scaled(X);
     m_workers.for_each(m_tiles.size(), [&](std::size_t t, std::size_t worker) {
       m_partial[t] = evaluate_tile<false>(m_tiles[t], m_scratch[worker], nullptr, nullptr);
     });
@@ -141,7 +115,7 @@ public:
   // what the quasi-Newton method scales its steps by.
   double value_and_gradient(const Points& X, Points& G, Vertex_scales* scales = nullptr)
   {
-    scale_points(X);
+    m_points = &m_unit_scaled(X);
     G.resize(X.rows(), 3);
     if(scales)
     {
@@ -212,18 +186,7 @@ private:
       for(Index f : hinge.f)
         *std::find(triangle_hinges[f].begin(), triangle_hinges[f].end(), none) = static_cast<Index>(h);
     }
-    // The triangles of each vertex.
-    std::vector<Index> vertex_triangle_begin(n + 1, 0), vertex_triangles;
-    for(const auto& t : m_mesh.triangles)
-      for(Index v : t)
-        ++vertex_triangle_begin[v + 1];
-    for(std::size_t i = 0; i < n; ++i)
-      vertex_triangle_begin[i + 1] += vertex_triangle_begin[i];
-    vertex_triangles.resize(vertex_triangle_begin[n]);
-    std::vector<Index> next(vertex_triangle_begin.begin(), vertex_triangle_begin.end() - 1);
-    for(std::size_t f = 0; f < nt; ++f)
-      for(Index v : m_mesh.triangles[f])
-        vertex_triangles[next[v]++] = static_cast<Index>(f);
+    const Vertex_table<Index> around = vertex_triangles(m_mesh);
 
     // Each tile's triangles, numbered in the tile by `slot` (valid where `stamp` is the tile's
     // number), and hinges.
@@ -250,8 +213,7 @@ private:
       // The triangles of its vertices, in index order (neighbours in memory).
       owned.clear();
       for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
-        owned.insert(owned.end(), vertex_triangles.begin() + vertex_triangle_begin[i],
-                     vertex_triangles.begin() + vertex_triangle_begin[i + 1]);
+        owned.insert(owned.end(), around.begin(i), around.end(i));
       std::sort(owned.begin(), owned.end());
       for(Index f : owned)
         add_triangle(f);
@@ -291,18 +253,6 @@ private:
     m_scratch.resize(m_workers.size());
     for(Scratch& scratch : m_scratch)
       scratch.frame.resize(largest_triangles);
-  }
-
-  // The scaled points s X (X itself when the scale is 1).
-  void scale_points(const Points& X)
-  {
-    if(m_scale == 1)
-      m_points = &X;
-    else
-    {
-      m_scaled.noalias() = m_scale * X;
-      m_points = &m_scaled;
-    }
   }
 
   // The tile's energy (its own hinges' terms, in order); with `gradient`, also the gradient,
@@ -398,7 +348,7 @@ private:
         }
       }
     }
-    const double scale = m_scale; // back from the scaled points: E(s X) = E(X)
+    const double scale = m_unit_scaled.scale(); // back from the scaled points: E(s X) = E(X)
     for(std::size_t i = first; i < tile.vertex_end; ++i)
     {
       if(scale != 1)
@@ -424,16 +374,15 @@ private:
 
   const Hinge_mesh& m_mesh;
   std::size_t m_number_of_hinges = 0; // those without a degenerate triangle
-  double m_scale, m_delta = 0;
+  Unit_scaled_points m_unit_scaled;
+  double m_delta = 0;
   std::vector<Tile> m_tiles;
   std::vector<std::array<Index, 3> > m_tile_triangles;
   std::vector<Tile_hinge> m_tile_hinges;
   Worker_pool m_workers;
   std::vector<Scratch> m_scratch; // one per worker
-  // recomputed at each evaluation: the scaled points (X itself when the scale is 1), and the
-  // tiles' energies
+  // recomputed at each evaluation: the scaled points, and the tiles' energies
   const Points* m_points = nullptr;
-  Points m_scaled;
   std::vector<double> m_partial;
 };
 

@@ -25,6 +25,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BILATERAL_NORMAL_FILTER_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Smoothed_start.h>
@@ -39,18 +40,18 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// The stages' sizes, chosen on the benchmark fairing_accuracy over its whole set of meshes and
-// noise levels: the Taubin steps, the normal filter's steps and the Gaussian's width in the
-// difference of unit normals (0.4: about 23 degrees), and the vertex fit's steps.
-constexpr std::size_t anchor_taubin_steps = 10;
-constexpr std::size_t normal_filter_steps = 5;
-constexpr double normal_difference_sigma = 0.4;
-constexpr std::size_t normal_fit_steps = 10;
-
 class Bilateral_normal_filter
 {
 public:
-  explicit Bilateral_normal_filter(const Hinge_mesh& mesh) : m_mesh(mesh), m_first_face(mesh.number_of_vertices + 1, 0)
+  // The stages' sizes, chosen on the benchmark fairing_accuracy over its whole set of meshes
+  // and noise levels: the Taubin steps, the normal filter's steps and the Gaussian's width in
+  // the difference of unit normals (0.4: about 23 degrees), and the vertex fit's steps.
+  static constexpr std::size_t anchor_taubin_steps = 10;
+  static constexpr std::size_t normal_filter_steps = 5;
+  static constexpr double normal_difference_sigma = 0.4;
+  static constexpr std::size_t normal_fit_steps = 10;
+
+  explicit Bilateral_normal_filter(const Hinge_mesh& mesh) : m_mesh(mesh), m_vertex_triangles(vertex_triangles(mesh))
   {
     // Each triangle's edge neighbours, from the hinges (a border edge has none).
     m_neighbours.assign(mesh.triangles.size(), {no_face, no_face, no_face});
@@ -61,17 +62,6 @@ public:
         const Index f = h.f[std::size_t(k)];
         m_neighbours[f][count[f]++] = h.f[std::size_t(1 - k)];
       }
-    // The triangles around each vertex, for the vertex fit's gather.
-    for(const auto& t : mesh.triangles)
-      for(Index v : t)
-        ++m_first_face[v + 1];
-    for(std::size_t i = 0; i < mesh.number_of_vertices; ++i)
-      m_first_face[i + 1] += m_first_face[i];
-    m_faces.resize(m_first_face.back());
-    std::vector<std::size_t> next(m_first_face.begin(), m_first_face.end() - 1);
-    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-      for(Index v : mesh.triangles[f])
-        m_faces[next[v]++] = Index(f);
   }
 
   // Replaces X, feasible in `bound`, by its anchor, feasible too.
@@ -159,15 +149,12 @@ private:
     parallel_for_blocks(m_mesh.number_of_vertices, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)
       {
-        const std::size_t first = m_first_face[i], last = m_first_face[i + 1];
+        const auto first = m_vertex_triangles.begin(i), last = m_vertex_triangles.end(i);
         if(first == last)
           continue;
         Eigen::Vector3d move = Eigen::Vector3d::Zero();
-        for(std::size_t k = first; k < last; ++k)
-        {
-          const Index f = m_faces[k];
-          move += m_normal[f] * m_normal[f].dot(m_centroid[f] - point(X, i));
-        }
+        for(auto f = first; f != last; ++f)
+          move += m_normal[*f] * m_normal[*f].dot(m_centroid[*f] - point(X, i));
         point(X, i) += move / double(last - first);
       }
     });
@@ -175,8 +162,7 @@ private:
 
   const Hinge_mesh& m_mesh;
   std::vector<std::array<Index, 3> > m_neighbours; // by triangle, no_face past its edge neighbours
-  std::vector<std::size_t> m_first_face;            // by vertex, into m_faces
-  std::vector<Index> m_faces;                       // the triangles around each vertex
+  Vertex_table<Index> m_vertex_triangles;           // for the vertex fit's gather
   std::vector<Eigen::Vector3d> m_normal, m_centroid;
   std::vector<double> m_area;
 };

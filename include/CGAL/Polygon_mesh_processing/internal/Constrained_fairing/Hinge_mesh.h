@@ -9,6 +9,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_HINGE_MESH_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_table.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -105,29 +106,6 @@ struct Hinge_mesh
       }
     sort_by_vertex(hinges, number_of_vertices, [](const Hinge& x) { return x.v[0]; },
                    [](const Hinge& x, const Hinge& y) { return x.v < y.v; });
-  }
-
-private:
-  // Sorts `items` by `less`, whose first key is vertex(item), in [0, n): placed by that vertex
-  // as in a counting sort, then each vertex's few items sorted. Nearly linear in the mesh's
-  // size, where a comparison sort of everything is not.
-  template <typename T, typename Vertex, typename Less>
-  static void sort_by_vertex(std::vector<T>& items, std::size_t n, const Vertex& vertex, const Less& less)
-  {
-    std::vector<std::size_t> end(n + 1, 0); // of each vertex's items, once placed
-    for(const T& x : items)
-      ++end[vertex(x) + 1];
-    for(std::size_t v = 1; v <= n; ++v)
-      end[v] += end[v - 1];
-    std::vector<T> sorted(items.size());
-    for(const T& x : items)
-      sorted[end[vertex(x)]++] = x;
-    for(std::size_t v = 0; v < n; ++v)
-    {
-      const auto first = sorted.begin() + std::ptrdiff_t(v == 0 ? 0 : end[v - 1]);
-      std::sort(first, sorted.begin() + std::ptrdiff_t(end[v]), less);
-    }
-    items.swap(sorted);
   }
 };
 

@@ -14,6 +14,7 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_table.h>
 
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -113,10 +114,6 @@ Input_error mesh_error(const TriangleMesh& tmesh, const VertexIndexMap& vertex_i
     std::size_t a, b, face;
     halfedge_descriptor h;
   };
-  // Sorted by (a, b, face): placed by a as in a counting sort, since the vertices are numbered
-  // from 0, then each vertex's few edges sorted by (b, face). A comparison sort of all of them
-  // was the largest single cost of the set-up at a million triangles.
-  std::vector<std::size_t> start(static_cast<std::size_t>(num_vertices(tmesh)) + 1, 0);
   std::size_t face_number = 0;
   for(auto f : faces(tmesh))
   {
@@ -125,27 +122,24 @@ Input_error mesh_error(const TriangleMesh& tmesh, const VertexIndexMap& vertex_i
     if(degree != 3)
       return {D::NOT_TRIANGLE, "face " + std::to_string(face_number) + " has " + std::to_string(degree) +
                                   " vertices: the mesh must be made of triangles"};
-    for(halfedge_descriptor h : around)
-      ++start[(std::min)(get(vertex_index, source(h, tmesh)), get(vertex_index, target(h, tmesh))) + 1];
     ++face_number;
   }
-  for(std::size_t v = 1; v < start.size(); ++v)
-    start[v] += start[v - 1];
-  std::vector<Face_edge> face_edges(start.back());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  face_number = 0;
-  for(auto f : faces(tmesh))
-  {
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tmesh), tmesh))
+  // Sorted by (a, b, face), a by a counting sort (Vertex_table.h).
+  Vertex_table<Face_edge> edges_by_vertex(static_cast<std::size_t>(num_vertices(tmesh)), [&](const auto& add) {
+    std::size_t number = 0;
+    for(auto f : faces(tmesh))
     {
-      const std::size_t s = get(vertex_index, source(h, tmesh)), t = get(vertex_index, target(h, tmesh));
-      face_edges[next[(std::min)(s, t)]++] = Face_edge{(std::min)(s, t), (std::max)(s, t), face_number, h};
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tmesh), tmesh))
+      {
+        const std::size_t s = get(vertex_index, source(h, tmesh)), t = get(vertex_index, target(h, tmesh));
+        add((std::min)(s, t), Face_edge{(std::min)(s, t), (std::max)(s, t), number, h});
+      }
+      ++number;
     }
-    ++face_number;
-  }
-  for(std::size_t v = 0; v + 1 < start.size(); ++v)
-    std::sort(face_edges.begin() + std::ptrdiff_t(start[v]), face_edges.begin() + std::ptrdiff_t(start[v + 1]),
-              [](const Face_edge& x, const Face_edge& y) { return x.b != y.b ? x.b < y.b : x.face < y.face; });
+  });
+  edges_by_vertex.sort_rows(
+    [](const Face_edge& x, const Face_edge& y) { return x.b != y.b ? x.b < y.b : x.face < y.face; });
+  const std::vector<Face_edge>& face_edges = edges_by_vertex.items;
   for(std::size_t i = 0, j = 0; i < face_edges.size(); i = j)
   {
     while(j < face_edges.size() && face_edges[j].a == face_edges[i].a && face_edges[j].b == face_edges[i].b)

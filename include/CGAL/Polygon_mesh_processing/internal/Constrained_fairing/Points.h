@@ -138,6 +138,29 @@ inline double unit_scale(const Points& X)
   return std::ldexp(1., (std::max)(-1000, (std::min)(1000, -exponent)));
 }
 
+// Points at the scale unit_scale() gives the input X0, for the terms evaluated there: X itself
+// when that scale is 1, else a copy scaled by it, whose storage is kept from one call to the
+// next.
+class Unit_scaled_points
+{
+public:
+  explicit Unit_scaled_points(const Points& X0) : m_scale(unit_scale(X0)) {}
+
+  double scale() const { return m_scale; }
+
+  const Points& operator()(const Points& X)
+  {
+    if(m_scale == 1)
+      return X;
+    m_scaled.noalias() = m_scale * X;
+    return m_scaled;
+  }
+
+private:
+  double m_scale;
+  Points m_scaled;
+};
+
 } // namespace Constrained_fairing
 } // namespace internal
 } // namespace Polygon_mesh_processing

@@ -18,7 +18,8 @@
 // triangle flat its terms are per triangle, not divided by their number: divided by it, the
 // barrier weakened as the mesh was refined, and the smallest angle on the noisy bunny fell
 // from 2.7 to 1.3 degrees between 75 k and 1.2 M triangles (2.9 at both per triangle).
-// Triangles that are degenerate in the input are left out (Bending_energy.h).
+// Triangles that are degenerate in the input are left out, as in the bending energy
+// (Mesh_operators.h).
 //
 // Evaluation: each block of triangles lists its slivers in parallel, then their terms are
 // summed and their gradients added in triangle order, so that results do not depend on the
@@ -27,12 +28,12 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SLIVER_BARRIER_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SLIVER_BARRIER_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_scales.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -49,20 +50,10 @@ public:
   // degrees.
   static constexpr double threshold = 0.0906485352754803;
 
-  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight) : m_mesh(mesh)
+  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight) : m_mesh(mesh), m_weight(weight)
   {
-    const std::size_t nt = mesh.triangles.size();
-    m_weight = weight;
-    m_used.assign(nt, 1);
     if(m_weight > 0)
-      for(std::size_t f = 0; f < nt; ++f)
-      {
-        const auto& v = mesh.triangles[f];
-        double longest = 0;
-        for(int k = 0; k < 3; ++k)
-          longest = (std::max)(longest, (point(X0, v[k]) - point(X0, v[(k + 1) % 3])).squaredNorm());
-        m_used[f] = area_normal(mesh, X0, f).norm() > Bending_energy::degenerate_area * longest;
-      }
+      m_degenerate = degenerate_triangles(mesh, X0);
   }
 
   double value(const Points& X) { return evaluate(X, nullptr, nullptr); }
@@ -87,7 +78,7 @@ private:
         const auto& t = m_mesh.triangles[f];
         const Eigen::Vector3d a = point(X, t[1]) - point(X, t[0]), b = point(X, t[2]) - point(X, t[0]);
         const double S = a.squaredNorm() + b.squaredNorm() + (b - a).squaredNorm();
-        if(12 * a.cross(b).squaredNorm() < threshold * threshold * S * S && m_used[f])
+        if(12 * a.cross(b).squaredNorm() < threshold * threshold * S * S && !m_degenerate[f])
           slivers.push_back(static_cast<Index>(f));
       }
     });
@@ -140,8 +131,8 @@ private:
   }
 
   const Hinge_mesh& m_mesh;
-  double m_weight = 0; // nu
-  std::vector<unsigned char> m_used; // not degenerate in the input
+  double m_weight; // nu
+  std::vector<bool> m_degenerate; // in the input, when the weight is not 0
   std::vector<std::vector<Index> > m_slivers; // per block of triangles
 };
 

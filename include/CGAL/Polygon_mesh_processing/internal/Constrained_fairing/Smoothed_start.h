@@ -12,18 +12,17 @@
 // smoothed start it ends close to it (test_voxel_workflow prints both). Averaging with the
 // neighbours moves each terrace as a whole towards the slope it stands for, which no step that
 // lowers the energy locally does. On noisy scans the smoothed start also leads to lower minima;
-// a step costs less than a gradient evaluation. Neighbours are taken from the triangles (an
-// interior edge counts twice, a border edge once), so that border vertices are smoothed along
-// the border.
+// a step costs less than a gradient evaluation. Neighbours are taken from the triangles
+// (Neighbour_mean, Mesh_operators.h), so that border vertices are smoothed along the border.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SMOOTHED_START_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 
 #include <cstddef>
-#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -39,21 +38,14 @@ template <typename Bound>
 void smooth_start(const Hinge_mesh& mesh, const Bound& bound, std::size_t steps, Points& X)
 {
   const std::size_t n = static_cast<std::size_t>(X.rows());
-  std::vector<double> count(n, 0.);
-  for(const auto& t : mesh.triangles)
-    for(Index v : t)
-      count[v] += 2;
-  Points sum(X.rows(), 3);
+  Neighbour_mean neighbours(mesh);
   for(std::size_t step = 0; step < steps; ++step)
   {
-    sum.setZero();
-    for(const auto& t : mesh.triangles)
-      for(int k = 0; k < 3; ++k)
-        point(sum, t[std::size_t(k)]) += point(X, t[std::size_t((k + 1) % 3)]) + point(X, t[std::size_t((k + 2) % 3)]);
+    neighbours.gather(X);
     const double lambda = step % 2 == 0 ? taubin_lambda : taubin_mu;
     for(std::size_t i = 0; i < n; ++i)
-      if(count[i] > 0)
-        point(X, i) = (1 - lambda) * point(X, i) + (lambda / count[i]) * point(sum, i);
+      if(neighbours.count(i) > 0)
+        point(X, i) = (1 - lambda) * point(X, i) + (lambda / neighbours.count(i)) * neighbours.sum(i);
     bound.project(X);
   }
 }
