@@ -85,10 +85,11 @@ public:
     Vertex_bounds bounds;
     if(!order(part, epsilon, np, bounds))
       return std::move(m_result);
+    const Iteration_callback heard(callback);
     if(bounds.is_box())
-      fair(part, region != nullptr, std::move(bounds).box(m_X0), np, callback);
+      fair(part, region != nullptr, std::move(bounds).box(m_X0), np, heard);
     else
-      fair(part, region != nullptr, std::move(bounds).ball(m_X0), np, callback);
+      fair(part, region != nullptr, std::move(bounds).ball(m_X0), np, heard);
     if(m_result)
       write_back(part);
     return std::move(m_result);
@@ -142,10 +143,11 @@ private:
     return true;
   }
 
-  // The remaining checks on the bound (the input inside it) and the triangles (an area), then
-  // the method.
-  template <typename Bound, typename NamedParameters, typename Callback>
-  void fair(const Part& part, bool is_region, const Bound& bound, const NamedParameters& np, const Callback& callback)
+  // The remaining checks on the bound (the input inside it) and the triangles (an area), the
+  // method, then the report.
+  template <typename Bound, typename NamedParameters>
+  void fair(const Part& part, bool is_region, const Bound& bound, const NamedParameters& np,
+            const Iteration_callback& callback)
   {
     std::size_t outside = part.size();
     part.for_each_vertex([&](std::size_t k, vertex_descriptor) {
@@ -155,10 +157,19 @@ private:
     m_rank = std::vector<Index>();
     if(!accept(outside_box_error(outside, part.size(), [&part](std::size_t k) { return part.number(k); })))
       return;
+    if(!descend_within(part, is_region, bound, callback))
+      return;
+    report(bound, np, part, is_region);
+  }
+
+  // Every step of the method but the report, whatever the named parameters.
+  template <typename Bound>
+  bool descend_within(const Part& part, bool is_region, const Bound& bound, const Iteration_callback& callback)
+  {
     const Hinge_mesh mesh = build_hinges(part, is_region);
     Fairing_objective energy(mesh, m_X0, m_settings.sliver_barrier_weight);
     if(!accept(area_error(energy.is_defined())))
-      return;
+      return false;
     Points anchor;
     if(m_settings.accurate)
     {
@@ -176,10 +187,10 @@ private:
       start(mesh, bound, energy, anchor);
       solve(mesh, bound, energy, callback);
       if(!m_result)
-        return;
+        return false;
       m_result.final_bending_energy = energy.bending_energy(m_X);
     }
-    report(bound, np, part, is_region);
+    return true;
   }
 
   Hinge_mesh build_hinges(const Part& part, bool is_region) const
@@ -208,8 +219,8 @@ private:
   }
 
   // The descent, then fold repair with the same solver.
-  template <typename Bound, typename Callback>
-  void solve(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy, const Callback& callback)
+  template <typename Bound>
+  void solve(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy, const Iteration_callback& callback)
   {
     std::optional<Projected_lbfgs<Bound> > quasi_newton;
     std::optional<Active_set_newton<Bound, SparseLinearSolver> > active_set;
@@ -217,7 +228,7 @@ private:
       quasi_newton.emplace(bound, energy);
     else
       active_set.emplace(mesh, bound, energy, m_solver);
-    const auto descend = [&](const Solver_options& options, const auto& heard, Points& X) {
+    const auto descend = [&](const Solver_options& options, const Iteration_callback& heard, Points& X) {
       return quasi_newton ? quasi_newton->run(X, options, heard) : active_set->run(X, options, heard);
     };
     Solver_report path = descend(m_settings.options, callback, m_X);

@@ -137,7 +137,7 @@ Fold_count repair_folds(const Hinge_mesh& mesh, const Bound& bound, const std::v
       lowest = e;
       return bool(callback(++heard, e));
     };
-    const Solver_report again = descend(left, below, Y);
+    const Solver_report again = descend(left, Iteration_callback(below), Y);
     path.cg_iterations += again.cg_iterations;
     path.energy_evaluations += again.energy_evaluations;
     if(heard == path.iterations)

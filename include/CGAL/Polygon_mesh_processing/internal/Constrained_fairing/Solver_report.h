@@ -1,8 +1,8 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// What a solver is asked (its options) and what it answers (its report), which the public
-// function turns into the public result once.
+// What a solver is asked (its options, the callback it calls after each iteration) and what
+// it answers (its report), which the driver turns into the public result once.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SOLVER_REPORT_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SOLVER_REPORT_H
@@ -18,6 +18,25 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
+
+// The iteration callback, a callable bool(std::size_t, double), held by reference: the solvers
+// take this one type, so that they are compiled once whatever callbacks a program passes.
+class Iteration_callback
+{
+public:
+  template <typename Callback>
+  Iteration_callback(const Callback& callback)
+    : m_callback(&callback), m_call([](const void* f, std::size_t iteration, double energy) {
+        return bool((*static_cast<const Callback*>(f))(iteration, energy));
+      })
+  {}
+
+  bool operator()(std::size_t iteration, double energy) const { return m_call(m_callback, iteration, energy); }
+
+private:
+  const void* m_callback;
+  bool (*m_call)(const void*, std::size_t, double);
+};
 
 struct Solver_options
 {
