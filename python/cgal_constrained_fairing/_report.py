@@ -44,8 +44,9 @@ class Report:
     initial_energy, final_energy : float
         The objective on the input and on the output: the bending energy plus the barrier
         against slivers, plus the fidelity term for ``objective="accurate"``.
-    final_bending_energy : float
-        The bending energy of the output.
+    initial_bending_energy, final_bending_energy : float
+        The bending energy alone, the paper's measure of fairness, of the input and of the
+        output.
     max_deviation : float
         The largest distance of an output vertex to its input position.
     number_of_vertices_at_bound : int
@@ -74,6 +75,7 @@ class Report:
     number_of_energy_evaluations: int
     initial_energy: float
     final_energy: float
+    initial_bending_energy: float
     final_bending_energy: float
     max_deviation: float
     number_of_vertices_at_bound: int
@@ -89,8 +91,9 @@ class Report:
             f"Report({self.status.value.lower().replace('_', ' ')} after "
             f"{self.number_of_iterations} iterations, "
             f"{self.number_of_energy_evaluations} energy evaluations",
-            f"  energy {self.initial_energy:.6g} -> {self.final_energy:.6g} "
-            f"(bending energy {self.final_bending_energy:.6g})",
+            f"  bending energy {self.initial_bending_energy:.6g} -> "
+            f"{self.final_bending_energy:.6g}, objective {self.initial_energy:.6g} -> "
+            f"{self.final_energy:.6g}",
             f"  deviation at most {self.max_deviation:.6g}; {self.number_of_vertices_at_bound} of "
             f"{self.deviation.shape[0]} vertices at the bound, {self.number_of_fixed_vertices} fixed",
         ]

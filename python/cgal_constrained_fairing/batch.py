@@ -51,14 +51,16 @@ if TYPE_CHECKING:
 __all__ = ["COLUMNS", "REPORT_NAME", "fair_files", "main"]
 
 COLUMNS = ("path", "vertices", "faces", "epsilon", "status", "error", "iterations",
-           "initial_energy", "final_energy", "max_deviation", "seconds", "worker", "output")
+           "initial_bending_energy", "final_bending_energy", "initial_energy", "final_energy",
+           "max_deviation", "seconds", "worker", "output")
 """The columns of the report, in order."""
 
 REPORT_NAME = "report.csv"
 """The report's file name in the output folder."""
 
 _INT_COLUMNS = ("vertices", "faces", "iterations")
-_FLOAT_COLUMNS = ("epsilon", "initial_energy", "final_energy", "max_deviation", "seconds")
+_FLOAT_COLUMNS = ("epsilon", "initial_bending_energy", "final_bending_energy", "initial_energy",
+                  "final_energy", "max_deviation", "seconds")
 _DONE = ("converged", "iteration_limit_reached", "cancelled")
 
 Eps = Union[str, float, int]
@@ -284,6 +286,8 @@ def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dic
         os.replace(partial, output)
         partial = None
         row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
+                   initial_bending_energy=report.initial_bending_energy,
+                   final_bending_energy=report.final_bending_energy,
                    initial_energy=report.initial_energy, final_energy=report.final_energy,
                    max_deviation=report.max_deviation, output=output)
     except Exception as error:

@@ -96,7 +96,8 @@ struct Array_map
 };
 
 // Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the checks of
-// Polygon_soup_check.h; returns the first defect found, and leaves `mesh` empty then.
+// Polygon_soup_check.h; returns the first defect found, and leaves `mesh` empty then. The defects
+// a mesh can hold (an empty one, one without faces, ...) are left to constrained_fairing().
 CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces, Mesh& mesh)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
@@ -124,7 +125,8 @@ CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces
 }
 
 // `measure(mesh)` on the mesh of the arrays, as (value, defect, message): NaN and the first
-// defect of the arrays, or the value and no defect.
+// defect of the arrays, or the value and no defect. The mesh is held to the contract of
+// constrained_fairing(), by its own check, as the measures are meant for its input.
 template <typename Measure>
 py::tuple measure_mesh(const Float_array& vertices, const Index_array& faces, const Measure& measure)
 {
@@ -134,6 +136,8 @@ py::tuple measure_mesh(const Float_array& vertices, const Index_array& faces, co
     py::gil_scoped_release release;
     Mesh mesh;
     error = build_mesh(vertices, faces, mesh);
+    if(!error)
+      error = CF::mesh_error(mesh, get(boost::vertex_index, mesh));
     if(!error)
       value = measure(mesh);
   }
@@ -313,6 +317,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
   report["number_of_energy_evaluations"] = result.number_of_energy_evaluations;
   report["initial_energy"] = result.initial_energy;
   report["final_energy"] = result.final_energy;
+  report["initial_bending_energy"] = result.initial_bending_energy;
   report["final_bending_energy"] = result.final_bending_energy;
   report["max_deviation"] = result.max_deviation;
   report["number_of_vertices_at_bound"] = result.number_of_vertices_at_bound;

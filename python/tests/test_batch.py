@@ -74,6 +74,8 @@ def check_outputs(rows, paths, out_dir, eps, **fair_options):
         assert row["epsilon"] == epsilon
         assert (row["vertices"], row["faces"]) == (len(V), len(F))
         assert row["iterations"] == report.number_of_iterations
+        assert row["initial_bending_energy"] == report.initial_bending_energy
+        assert row["final_bending_energy"] == report.final_bending_energy
         assert row["initial_energy"] == report.initial_energy
         assert row["final_energy"] == report.final_energy
         assert row["max_deviation"] == report.max_deviation <= epsilon
