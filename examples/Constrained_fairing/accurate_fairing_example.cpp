@@ -3,6 +3,8 @@
 //
 // A noisy scan of unknown accuracy: the noise level estimated from the mesh itself as epsilon,
 // and the accurate objective, which ends closer to the true surface than the fairest one.
+// Writes accurate.off, and fails unless the bound holds and both the objective and the bending
+// energy went down.
 //
 //   accurate_fairing_example [IN]
 
@@ -42,9 +44,17 @@ int main(int argc, char* argv[])
     std::cerr << "error: " << result.message << std::endl;
     return EXIT_FAILURE;
   }
-  std::cout << "bending energy " << result.initial_energy << " -> " << result.final_bending_energy << ", "
+  // The objective adds to the bending energy a fidelity term and a barrier against slivers.
+  std::cout << "bending energy " << result.initial_bending_energy << " -> " << result.final_bending_energy
+            << ", objective " << result.initial_energy << " -> " << result.final_energy << ", "
             << result.number_of_unfolded_faces << " folded faces repaired, largest move " << result.max_deviation
             << std::endl;
+  if(!(result.max_deviation <= epsilon && result.final_energy <= result.initial_energy &&
+       result.final_bending_energy < result.initial_bending_energy))
+  {
+    std::cerr << "error: the bound or the decrease of the energies does not hold" << std::endl;
+    return EXIT_FAILURE;
+  }
   return CGAL::IO::write_polygon_mesh("accurate.off", mesh, CGAL::parameters::stream_precision(17)) ? EXIT_SUCCESS
                                                                                                      : EXIT_FAILURE;
 }

@@ -3,6 +3,7 @@
 //
 // The named parameters of constrained_fairing(): the paper's box bound, an iteration cap, a
 // progress callback, and the paper's Newton method with a sparse solver of one's choice.
+// Fails unless each bound holds, the cap is kept and the bending energy went down.
 //
 //   constrained_fairing_parameters_example [IN] [EPS]
 
@@ -16,14 +17,27 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Polyhedron = CGAL::Polyhedron_3<K>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
+
+// The bending energy before and after, and the objective minimized, which adds a barrier
+// against slivers, when it differs.
+std::string energies(const PMP::Constrained_fairing_result& r)
+{
+  std::ostringstream text;
+  text << "bending energy " << r.initial_bending_energy << " -> " << r.final_bending_energy;
+  if(r.initial_energy != r.initial_bending_energy || r.final_energy != r.final_bending_energy)
+    text << ", objective " << r.initial_energy << " -> " << r.final_energy;
+  return text.str();
+}
 
 int main(int argc, char* argv[])
 {
@@ -50,8 +64,12 @@ int main(int argc, char* argv[])
                                       .number_of_iterations(30)
                                       .vertex_point_map(get(CGAL::vertex_point, box_mesh))));
   /// [chaining]
-  std::cout << "box of side 2 eps: energy " << box.initial_energy << " -> " << box.final_energy << ", max |p - p0| "
-            << box.max_deviation << std::endl;
+  if(!box)
+  {
+    std::cerr << "error: " << box.message << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "box of side 2 eps: " << energies(box) << ", max |p - p0| " << box.max_deviation << std::endl;
 
   // Or append CGAL's pack to one of ours: here the paper's Newton method, with a sparse solver
   // of one's choice to factorize its Hessian model.
@@ -69,7 +87,15 @@ int main(int argc, char* argv[])
     std::cerr << "error: " << ball.message << std::endl;
     return EXIT_FAILURE;
   }
-  std::cout << "ball of radius eps: energy " << ball.initial_energy << " -> " << ball.final_energy << " in "
-            << ball.number_of_iterations << " iterations, max |p - p0| " << ball.max_deviation << std::endl;
+  std::cout << "ball of radius eps: " << energies(ball) << " in " << ball.number_of_iterations
+            << " iterations, max |p - p0| " << ball.max_deviation << std::endl;
+  // The box's corners lie sqrt(3) eps away (up to rounding); the cap was 30 iterations.
+  if(!(box.max_deviation <= std::sqrt(3.) * epsilon * (1 + 1e-12) && box.number_of_iterations <= 30 &&
+       box.final_bending_energy < box.initial_bending_energy && ball.max_deviation <= epsilon &&
+       ball.final_bending_energy < ball.initial_bending_energy))
+  {
+    std::cerr << "error: a bound, the iteration cap or the decrease of the bending energy does not hold" << std::endl;
+    return EXIT_FAILURE;
+  }
   return EXIT_SUCCESS;
 }
