@@ -165,7 +165,7 @@ bool is_readable(const std::string& path, const std::uint8_t* data, std::size_t 
   // The soup check of the command-line tool and the Python module guards CGAL's mesh builder:
   // it must accept exactly the soups that CGAL's own test accepts.
   const bool accepted = !PMP::internal::Constrained_fairing::polygon_soup_error(points.size(), polygons);
-  require(accepted == (!polygons.empty() && PMP::is_polygon_soup_a_polygon_mesh(polygons)),
+  require(accepted == PMP::is_polygon_soup_a_polygon_mesh(polygons),
           "the soup check agrees with is_polygon_soup_a_polygon_mesh()");
   return true;
 }
