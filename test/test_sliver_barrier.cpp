@@ -3,10 +3,11 @@
 //
 // The barrier against slivers: hand-computed values, one term per sliver, zero on good
 // triangles, invariance under uniform scaling, triangles degenerate in the input left out, the
-// analytic gradient against central finite differences; then on the noisy elephant, that the
-// energy alone leaves slivers and the barrier removes them without raising the bending energy,
-// the bound holding exactly and the objective never rising; weight 0 is the energy alone; a bad
-// weight is rejected.
+// analytic gradient against central finite differences, the same value and scaled gradient
+// and stiffness at extreme scales; then on the noisy elephant, that the energy alone leaves
+// slivers and the barrier removes them without raising the bending energy, the bound holding
+// exactly and the objective never rising; weight 0 is the energy alone; a bad weight is
+// rejected.
 
 #include "test_support.h"
 
@@ -75,6 +76,20 @@ void check_values()
   CHECK(b.value(x.X) == 0 && b.value(Y) == 0);
 }
 
+// Caps made in x.X by moving vertex 2 of every 17th triangle almost onto the edge (0, 1);
+// returns their number.
+std::size_t make_caps(Indexed& x)
+{
+  std::size_t caps = 0;
+  for(std::size_t f = 0; f < x.hinges.triangles.size(); f += 17)
+  {
+    const auto& t = x.hinges.triangles[f];
+    CF::point(x.X, t[2]) = 0.499 * CF::point(x.X, t[0]) + 0.499 * CF::point(x.X, t[1]) + 0.002 * CF::point(x.X, t[2]);
+    ++caps;
+  }
+  return caps;
+}
+
 // The gradient against central differences, on a sphere with needles and caps made by moving
 // vertices onto their neighbours' edges; the stiffness gets a positive term where the barrier is.
 void check_gradient()
@@ -83,14 +98,7 @@ void check_gradient()
   test::add_noise(m, 0.02, 3);
   Indexed x(m);
   const CF::Points X0 = x.X; // no triangle degenerate: none is left out
-  std::size_t slivers = 0;
-  for(std::size_t f = 0; f < x.hinges.triangles.size(); f += 17)
-  {
-    const auto& t = x.hinges.triangles[f];
-    // vertex 2 almost onto edge (0, 1): a cap
-    CF::point(x.X, t[2]) = 0.499 * CF::point(x.X, t[0]) + 0.499 * CF::point(x.X, t[1]) + 0.002 * CF::point(x.X, t[2]);
-    ++slivers;
-  }
+  const std::size_t slivers = make_caps(x);
   CF::Sliver_barrier b(x.hinges, X0, 100);
   CF::Points G = CF::Points::Zero(x.X.rows(), 3);
   CF::Vertex_scales scales;
@@ -114,6 +122,35 @@ void check_gradient()
   std::cout << "barrier " << value << ", largest gradient entry " << largest << ", worst difference " << worst << std::endl;
   CHECK(largest > 0 && worst <= 1e-5 * largest);
   CHECK(scales.stiffness.maxCoeff() > 0 && scales.stiffness.minCoeff() >= 0);
+}
+
+// The same value, gradient times 1 / s and stiffness times 1 / s^2 on the capped sphere scaled
+// by s, also where the squares of squared lengths leave the range of double (coordinates under
+// about 1e-76 or over 1e76). The stiffness, up to 1e12 / s^2 here, must itself fit in double.
+void check_extreme_scales()
+{
+  Mesh m = test::icosphere(2);
+  test::add_noise(m, 0.02, 3);
+  Indexed x(m);
+  const CF::Points X0 = x.X;
+  make_caps(x);
+  const auto evaluate = [&](double s, CF::Points& G, CF::Vertex_scales& scales) {
+    G = CF::Points::Zero(x.X.rows(), 3);
+    scales.stiffness = Eigen::VectorXd::Zero(x.X.rows());
+    CF::Sliver_barrier b(x.hinges, s * X0, 100);
+    return b.add_gradient(s * x.X, G, &scales);
+  };
+  CF::Points G, GY;
+  CF::Vertex_scales K, KY;
+  const double B = evaluate(1, G, K);
+  CHECK(B > 0);
+  for(double s : {1e-100, 1e-80, 1e-6, 1e6, 1e80, 1e100})
+  {
+    const double BY = evaluate(s, GY, KY);
+    CHECK(std::abs(BY - B) <= 1e-12 * B);
+    CHECK(GY.allFinite() && (s * GY - G).norm() <= 1e-10 * G.norm());
+    CHECK(KY.stiffness.allFinite() && (s * s * KY.stiffness - K.stiffness).norm() <= 1e-10 * K.stiffness.norm());
+  }
 }
 
 double min_angle_degrees(const Mesh& m)
@@ -200,6 +237,7 @@ int main()
 {
   check_values();
   check_gradient();
+  check_extreme_scales();
   check_elephant();
   check_bad_weight();
   return test::report("test_sliver_barrier");

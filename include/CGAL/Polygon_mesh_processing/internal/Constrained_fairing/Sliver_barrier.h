@@ -19,7 +19,10 @@
 // barrier weakened as the mesh was refined, and the smallest angle on the noisy bunny fell
 // from 2.7 to 1.3 degrees between 75 k and 1.2 M triangles (2.9 at both per triangle).
 // Triangles that are degenerate in the input are left out, as in the bending energy
-// (Mesh_operators.h).
+// (Mesh_operators.h). Like the energy, it is evaluated on the points brought to unit scale
+// (Unit_scaled_points, Points.h): its test and its gradient take squares of squared lengths,
+// which in double underflow for coordinates under about 1e-76 and overflow over 1e76, where the
+// barrier was otherwise wrong or zero.
 //
 // Evaluation: each block of triangles lists its slivers in parallel, then their terms are
 // summed and their gradients added in triangle order, so that results do not depend on the
@@ -50,10 +53,11 @@ public:
   // degrees.
   static constexpr double threshold = 0.0906485352754803;
 
-  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight) : m_mesh(mesh), m_weight(weight)
+  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight)
+    : m_mesh(mesh), m_weight(weight), m_unit_scaled(X0)
   {
     if(m_weight > 0)
-      m_degenerate = degenerate_triangles(mesh, X0);
+      m_degenerate = degenerate_triangles(mesh, m_unit_scaled(X0));
   }
 
   double value(const Points& X) { return evaluate(X, nullptr, nullptr); }
@@ -64,10 +68,11 @@ public:
 private:
   // The test needs no square root: q < q0 is 12 |N|^2 < q0^2 S^2, N the doubled area vector and
   // S the sum of the squared edges.
-  double evaluate(const Points& X, Points* G, Vertex_scales* scales)
+  double evaluate(const Points& unscaled, Points* G, Vertex_scales* scales)
   {
     if(m_weight == 0)
       return 0;
+    const Points& X = m_unit_scaled(unscaled);
     const std::size_t nt = m_mesh.triangles.size();
     m_slivers.resize(number_of_blocks(nt));
     parallel_for_blocks(nt, [&](std::size_t begin, std::size_t end, std::size_t block) {
@@ -109,6 +114,7 @@ private:
 
   // With B_f = w (r - 1)^2 and r = q0 / (q + q0 / 100): dB_f = outer * dr, dr = inner * dq,
   // q = 4 sqrt(3) A / S, dA at vertex k = n x (p_(k+2) - p_(k+1)) / 2, dS = 2 (2 p_k - the others).
+  // At the scaled points s X, back to X: s times the gradient, s^2 times the stiffness.
   void add_triangle_gradient(const Points& X, std::size_t f, double outer, double inner, Points& G,
                              Vertex_scales* scales) const
   {
@@ -117,21 +123,22 @@ private:
     const Eigen::Vector3d N = area_normal(m_mesh, X, f);
     const double length = N.norm();
     const Eigen::Vector3d n = length > 0 ? Eigen::Vector3d(N / length) : Eigen::Vector3d::Zero();
-    const double A = length / 2, S = squared_edges(X, f);
+    const double A = length / 2, S = squared_edges(X, f), s = m_unit_scaled.scale();
     for(int k = 0; k < 3; ++k)
     {
       const Eigen::Vector3d& a = p[(k + 1) % 3];
       const Eigen::Vector3d& b = p[(k + 2) % 3];
       const Eigen::Vector3d dA = 0.5 * n.cross(b - a), dS = 2 * (2 * p[k] - a - b);
       const Eigen::Vector3d dq = 4 * std::sqrt(3.) * (S * dA - A * dS) / (S * S);
-      point(G, t[k]) += outer * inner * dq;
+      point(G, t[k]) += s * outer * inner * dq;
       if(scales)
-        scales->stiffness[static_cast<Eigen::Index>(t[k])] += 2 * m_weight * inner * inner * dq.squaredNorm();
+        scales->stiffness[static_cast<Eigen::Index>(t[k])] += s * s * 2 * m_weight * inner * inner * dq.squaredNorm();
     }
   }
 
   const Hinge_mesh& m_mesh;
   double m_weight; // nu
+  Unit_scaled_points m_unit_scaled;
   std::vector<bool> m_degenerate; // in the input, when the weight is not 0
   std::vector<std::vector<Index> > m_slivers; // per block of triangles
 };
