@@ -114,25 +114,6 @@ double surface_rms(const Mesh& result, const Mesh& clean)
   return std::sqrt(sum / double(num_vertices(result)));
 }
 
-// The bending energy summed hinge by hinge from its formula (Bending_energy.h), with no
-// regularization and no hinge left out: the mesh's, for a mesh without degenerate triangles.
-double plain_bending_energy(const Mesh& m)
-{
-  double sum = 0;
-  for(auto e : edges(m))
-  {
-    if(is_border(e, m))
-      continue;
-    const auto h = halfedge(e, m), o = opposite(h, m);
-    const Point &a = m.point(source(h, m)), &b = m.point(target(h, m));
-    const test::Vector N1 = CGAL::cross_product(b - a, m.point(target(next(h, m), m)) - a);
-    const test::Vector N2 = CGAL::cross_product(a - b, m.point(target(next(o, m), m)) - b);
-    const double l1 = std::sqrt(N1.squared_length()), l2 = std::sqrt(N2.squared_length());
-    sum += 1.5 * CGAL::squared_distance(a, b) / (l1 + l2) * 0.5 * (N1 / l1 - N2 / l2).squared_length();
-  }
-  return sum;
-}
-
 // The barrier against slivers of the output `m`, relative to the input `m0`.
 double sliver_barrier(const Mesh& m0, const Mesh& m)
 {
@@ -173,8 +154,8 @@ void check_elephant()
     // energy plus the barrier against slivers; the accurate one adds a positive fidelity term.
     const auto near = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::abs(y); };
     CHECK(r.number_of_degenerate_edges == 0); // else the plain sums below would not be the energy
-    const double bending_input = plain_bending_energy(noisy), bending = plain_bending_energy(accurate),
-                 bending_fairest = plain_bending_energy(fairest);
+    const double bending_input = test::plain_bending_energy(noisy), bending = test::plain_bending_energy(accurate),
+                 bending_fairest = test::plain_bending_energy(fairest);
     CHECK(near(r.initial_bending_energy, bending_input) && near(r_fairest.initial_bending_energy, bending_input));
     CHECK(near(r.final_bending_energy, bending) && near(r_fairest.final_bending_energy, bending_fairest));
     CHECK(near(r_fairest.initial_energy, bending_input + sliver_barrier(noisy, noisy)));

@@ -136,25 +136,6 @@ void check_gradients()
   }
 }
 
-// The energy summed hinge by hinge from its formula, with no regularization.
-double plain_energy(const Mesh& m)
-{
-  double sum = 0;
-  for(auto e : edges(m))
-  {
-    if(is_border(e, m))
-      continue;
-    const auto h = halfedge(e, m), o = opposite(h, m);
-    const Point &a = m.point(source(h, m)), &b = m.point(target(h, m));
-    const test::Vector N1 = CGAL::cross_product(b - a, m.point(target(next(h, m), m)) - a);
-    const test::Vector N2 = CGAL::cross_product(a - b, m.point(target(next(o, m), m)) - b);
-    const double l1 = std::sqrt(N1.squared_length()), l2 = std::sqrt(N2.squared_length());
-    const test::Vector d = N1 / l1 - N2 / l2;
-    sum += 1.5 * CGAL::squared_distance(a, b) / (l1 + l2) * 0.5 * d.squared_length();
-  }
-  return sum;
-}
-
 // A mesh of many tiles (Bending_energy::tile_size vertices each), numbered as in its file,
 // so that tiles are scattered over the surface and many triangles and hinges are shared by
 // two tiles: the energy is the plain sum of the hinge terms, whatever the numbering, and the
@@ -167,7 +148,7 @@ void check_tiled_evaluation()
   test::add_noise(bunny, 0.25 * test::mean_edge_length(bunny), 12);
   const Indexed x(bunny);
   const double E = CF::Bending_energy(x.hinges, x.X).value(x.X);
-  const double reference = plain_energy(bunny);
+  const double reference = test::plain_bending_energy(bunny);
   std::cout << "  tiled energy " << E << ", plain sum " << reference << std::endl;
   CHECK(std::abs(E - reference) <= 1e-12 * reference);
 

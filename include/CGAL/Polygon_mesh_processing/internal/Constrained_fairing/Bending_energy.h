@@ -72,17 +72,18 @@ public:
   Bending_energy(const Hinge_mesh& mesh, const Points& X0) : m_mesh(mesh), m_unit_scaled(X0)
   {
     const Points& P = m_unit_scaled(X0);
-    const std::size_t nt = m_mesh.triangles.size();
-    double sum = 0; // of the unregularized doubled areas
-    for(std::size_t f = 0; f < nt; ++f)
-      sum += area_normal(m_mesh, P, f).norm();
-    m_delta = nt == 0 ? 0 : area_regularization * sum / double(nt);
+    m_delta = regularization(mesh, P);
     build_tiles(degenerate_triangles(m_mesh, P));
   }
 
-  // False if the input has no area at all (in double): then the regularization vanishes
-  // and the energy is undefined.
-  bool is_defined() const { return m_delta * m_delta > 0; }
+  // Whether the energy is defined on `mesh` with the input points X0: false if they have no
+  // area at all (in double), for the regularization then vanishes.
+  static bool is_defined(const Hinge_mesh& mesh, const Points& X0)
+  {
+    Unit_scaled_points unit_scaled(X0);
+    const double delta = regularization(mesh, unit_scaled(X0));
+    return delta * delta > 0;
+  }
 
   // The number of hinges left out because of a degenerate triangle.
   std::size_t number_of_degenerate_hinges() const { return m_mesh.hinges.size() - m_number_of_hinges; }
@@ -169,6 +170,17 @@ private:
   };
 
   // The tiles: the triangles and hinges each needs.
+  // The regularization of the areas: a fraction of the mean doubled area at the unit-scaled
+  // input points P.
+  static double regularization(const Hinge_mesh& mesh, const Points& P)
+  {
+    const std::size_t nt = mesh.triangles.size();
+    double sum = 0; // of the unregularized doubled areas
+    for(std::size_t f = 0; f < nt; ++f)
+      sum += area_normal(mesh, P, f).norm();
+    return nt == 0 ? 0 : area_regularization * sum / double(nt);
+  }
+
   void build_tiles(const std::vector<bool>& degenerate)
   {
     const std::size_t n = m_mesh.number_of_vertices, nt = m_mesh.triangles.size();

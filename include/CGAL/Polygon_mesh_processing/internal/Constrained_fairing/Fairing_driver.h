@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set_newton.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bilateral_normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
@@ -167,9 +168,9 @@ private:
   bool descend_within(const Part& part, bool is_region, const Bound& bound, const Iteration_callback& callback)
   {
     const Hinge_mesh mesh = build_hinges(part, is_region);
-    Fairing_objective energy(mesh, m_X0, m_settings.sliver_barrier_weight);
-    if(!accept(area_error(energy.is_defined())))
+    if(!accept(area_error(Bending_energy::is_defined(mesh, m_X0))))
       return false;
+    Fairing_objective energy(mesh, m_X0, m_settings.sliver_barrier_weight);
     Points anchor;
     if(m_settings.accurate)
     {

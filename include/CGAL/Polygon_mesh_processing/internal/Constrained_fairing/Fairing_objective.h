@@ -65,7 +65,6 @@ public:
     }
   }
 
-  bool is_defined() const { return m_bending.is_defined(); }
   std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
 
   double bending_energy(const Points& X) { return m_bending.value(X); }

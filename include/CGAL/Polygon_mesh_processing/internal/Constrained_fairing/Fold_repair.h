@@ -16,6 +16,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FOLD_REPAIR_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solver_report.h>
 
@@ -64,25 +65,14 @@ void reseed_folds(const Hinge_mesh& mesh, const Bound& bound, const std::vector<
     if(in_fold[t[0]] || in_fold[t[1]] || in_fold[t[2]])
       for(Index v : t)
         moves[v] = true;
-  // Neighbours from the triangles, as in Smoothed_start.h.
-  Points sum(X.rows(), 3);
-  std::vector<double> count(n, 0.);
+  Neighbour_mean neighbours(mesh, [&](std::size_t i) { return bool(moves[i]); });
   for(std::size_t step = 0; step < reseed_steps; ++step)
   {
-    sum.setZero();
-    std::fill(count.begin(), count.end(), 0.);
-    for(const auto& t : mesh.triangles)
-      for(int k = 0; k < 3; ++k)
-        if(moves[t[std::size_t(k)]])
-        {
-          point(sum, t[std::size_t(k)]) +=
-            point(X, t[std::size_t((k + 1) % 3)]) + point(X, t[std::size_t((k + 2) % 3)]);
-          count[t[std::size_t(k)]] += 2;
-        }
+    neighbours.gather(X);
     for(std::size_t i = 0; i < n; ++i)
-      if(moves[i] && count[i] > 0)
+      if(neighbours.count(i) > 0)
       {
-        point(X, i) = point(sum, i) / count[i];
+        point(X, i) = neighbours.mean(i);
         bound.project(X, i);
       }
   }

@@ -202,7 +202,7 @@ Input_error outside_box_error(std::size_t outside, std::size_t n, const Number& 
   return {Constrained_fairing_defect::OUTSIDE_BOX, "vertex " + std::to_string(number(outside)) + " lies outside its box"};
 }
 
-// `defined`: whether the energy has a scale (Bending_energy::is_defined()), which it lacks
+// `defined`: whether the energy is defined (Bending_energy::is_defined()), which it is not
 // only if every triangle has zero area in double.
 inline Input_error area_error(bool defined)
 {
