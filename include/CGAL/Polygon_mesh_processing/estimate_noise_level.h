@@ -107,7 +107,7 @@ neighbours within two edges are not used; the estimate is `0` when no vertex can
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+    \cgalParamDescription{the position of each vertex of `tmesh`, only read}
     \cgalParamType{a class model of `ReadablePropertyMap` with
                    `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and
                    `%Point_3` as value type}
