@@ -46,7 +46,8 @@ public:
   {}
 
   // Fairs X, feasible on entry, in place. `callback(iteration, energy)` returning false
-  // cancels. On LINEAR_SOLVER_FAILED, X holds an intermediate iterate: discard it. The model
+  // cancels. On LINEAR_SOLVER_FAILED, X holds the last iterate (the input if the
+  // factorization failed) and final_energy its energy (0 if the factorization failed). The model
   // Hessian depends only on the input points: it is factorized by the first run, and the
   // later ones (fold repair) reuse it.
   template <typename Callback>
@@ -66,6 +67,7 @@ public:
       }
     }
 
+    const std::size_t evaluations_before = m_search.evaluations();
     double E = m_energy.value_and_gradient(X, m_G, nullptr);
     report.initial_energy = E;
     Energy_history history(options);
@@ -105,7 +107,7 @@ public:
         {
           report.status = Constrained_fairing_status::LINEAR_SOLVER_FAILED;
           report.message = "the sparse linear solver failed in a Newton step";
-          return report;
+          break;
         }
         const double E_y = cauchy.energy;
         const auto decreases = [&](double e, const Points&) { return e < E_y; };
@@ -123,7 +125,7 @@ public:
         break;
     }
     report.final_energy = E;
-    report.energy_evaluations = m_search.evaluations() + 1 + (newton ? 2 : 1) * report.iterations;
+    report.energy_evaluations = m_search.evaluations() - evaluations_before + 1 + (newton ? 2 : 1) * report.iterations;
     return report;
   }
 

@@ -132,14 +132,18 @@ Fold_count repair_folds(const Hinge_mesh& mesh, const Bound& bound, const std::v
     path.energy_evaluations += again.energy_evaluations;
     if(heard == path.iterations)
       break;
+    // A linear solver that fails midway (Newton method) leaves the last iterate, which was
+    // heard: the round ends there, with the status of the path before it.
+    const bool failed = again.status == Constrained_fairing_status::LINEAR_SOLVER_FAILED;
     path.iterations = heard;
-    path.status = again.status;
-    path.final_energy = again.final_energy;
+    path.final_energy = lowest;
+    if(!failed)
+      path.status = again.status;
     X.swap(Y);
     std::vector<Index> left_folded = folds(X);
     const bool fewer = left_folded.size() < folded.size();
     folded.swap(left_folded);
-    if(!fewer)
+    if(failed || !fewer)
       break;
   }
   count.after = folded.size();

@@ -74,6 +74,8 @@ public:
   Solver_report run(Points& X, const Solver_options& options, const Callback& callback)
   {
     Solver_report report;
+    // The line search counts over all runs: this one's are those from here.
+    const std::size_t evaluations_before = m_search.evaluations();
     double E = m_energy.value_and_gradient(X, m_G, &m_scales);
     report.initial_energy = E;
     Energy_history history(options);
@@ -131,7 +133,7 @@ public:
         break;
     }
     report.final_energy = E;
-    report.energy_evaluations = m_search.evaluations() + 1;
+    report.energy_evaluations = m_search.evaluations() - evaluations_before + 1;
     return report;
   }
 
