@@ -54,10 +54,14 @@ public:
 
   double value(const Points& X) { return value_and_gradient(X, m_G, nullptr); }
 
+  // The evaluations so far, with or without the gradient.
+  std::size_t evaluations() const { return m_evaluations; }
+
   // The gradient A D; the vertex scales: A's diagonal, averaged over the three coordinates,
   // and no limit on a move.
   double value_and_gradient(const Points& X, Points& G, CF::Vertex_scales* scales)
   {
+    ++m_evaluations;
     const Points D = X - m_M;
     G = m_W.cwiseProduct(D);
     for(const auto& e : m_edges)
@@ -96,6 +100,7 @@ private:
   Edges m_edges;
   double m_tau;
   Points m_G; // value()'s unused gradient
+  std::size_t m_evaluations = 0;
 };
 
 // The problems share the vertices of a plane patch, the size of their bound, and the mesh's
@@ -180,12 +185,23 @@ void check_run(const Setting& setting, const Bound& bound, Deviation_bound shape
     energies.push_back(e);
     return true;
   };
+  // One solver object runs twice from the same start, as fold repair reuses it: both runs
+  // must be the same, and each must count the evaluations it made.
+  CF::Projected_lbfgs<Bound, Quadratic> quasi_newton(bound, f);
+  CF::Active_set_newton<Bound, Sparse_solver, Quadratic> active_set(setting.indexed.hinges, bound, f, Sparse_solver());
   CF::Solver_report report;
-  if(method == Constrained_fairing_method::QUASI_NEWTON)
-    report = CF::Projected_lbfgs<Bound, Quadratic>(bound, f).run(X, options, callback);
-  else
-    report = CF::Active_set_newton<Bound, Sparse_solver, Quadratic>(setting.indexed.hinges, bound, f, Sparse_solver())
-               .run(X, options, callback);
+  for(int run = 0; run < 2; ++run)
+  {
+    X = setting.X0;
+    energies.clear();
+    const std::size_t before = f.evaluations();
+    const CF::Solver_report previous = report;
+    report = method == Constrained_fairing_method::QUASI_NEWTON ? quasi_newton.run(X, options, callback)
+                                                                 : active_set.run(X, options, callback);
+    CHECK(report.energy_evaluations == f.evaluations() - before);
+    if(run == 1)
+      CHECK(report.iterations == previous.iterations && report.final_energy == previous.final_energy);
+  }
 
   CHECK(report.status == Constrained_fairing_status::CONVERGED);
   CHECK(test::bound_violation(to_points(X), to_points(setting.X0), setting.eps, shape) == 0);
