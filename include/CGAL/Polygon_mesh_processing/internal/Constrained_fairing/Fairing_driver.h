@@ -40,9 +40,7 @@
 
 #include <array>
 #include <cstddef>
-#include <memory>
 #include <optional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -55,7 +53,6 @@ template <typename TriangleMesh, typename VertexPointMap, typename SparseLinearS
 class Fairing_driver
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
   using Part = Fairing_part<TriangleMesh>;
 

@@ -192,7 +192,7 @@ Input_error coordinates_error(const Points& X0, const Number& number)
   return {};
 }
 
-// `outside` is the first vertex outside its box (Deviation_bounds.h's first_outside()), or the
+// `outside` is the first vertex outside its box in the order of the user's vertices, or the
 // number of vertices if there is none; `number(i)` names vertex i in the message.
 template <typename Number>
 Input_error outside_box_error(std::size_t outside, std::size_t n, const Number& number)
