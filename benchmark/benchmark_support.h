@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the benchmark programs share: the mesh type, seeded noise, the mean edge length, angles,
-// the CHOLMOD solver type and median timing.
+// the CHOLMOD solver type, median timing and the machine the figures come from.
 
 #ifndef CGAL_CONSTRAINED_FAIRING_BENCHMARK_SUPPORT_H
 #define CGAL_CONSTRAINED_FAIRING_BENCHMARK_SUPPORT_H
@@ -18,6 +18,11 @@
 
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD
 #include <Eigen/CholmodSupport>
+#endif
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -170,6 +175,27 @@ inline double peak_memory_bytes()
 }
 
 inline void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+// The CPU model as the system names it (Linux: /proc/cpuinfo), and the number of threads the
+// library's loops run on here (TBB's arena, 1 without TBB), printed with every figure since
+// ratios differ from one CPU to another.
+inline std::string machine_description()
+{
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while(std::getline(cpuinfo, line))
+    if(line.rfind("model name", 0) == 0)
+    {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+#ifdef CGAL_LINKED_WITH_TBB
+  const int threads = tbb::this_task_arena::max_concurrency(), cpus = tbb::info::default_concurrency();
+#else
+  const int threads = 1, cpus = 1;
+#endif
+  return model + ", " + std::to_string(cpus) + " CPUs, " + std::to_string(threads) + " threads";
+}
 
 } // namespace benchmark
 

@@ -4,10 +4,11 @@
 // How the default call scales, one mesh size per process so that the peak memory is that of
 // one call:
 //
-//   fairing_scaling [MESH] [--level L] [--runs N]
+//   fairing_scaling [MESH] [--level L] [--runs N] [--threads K]
 //
 // MESH (default: the bundled bunny, data/bunny00.off) is Loop subdivided L times (default 1)
-// and given seeded noise of 0.25 h; epsilon = 0.25 h. Reports, all measured in this process,
+// and given seeded noise of 0.25 h; epsilon = 0.25 h. K limits the library's threads (default:
+// all). Prints the CPU model and the threads first; reports, all measured in this process,
 // medians of N runs (default 3):
 //  - the default call as a user makes it: time, iterations, energy evaluations, energy
 //    (the objective, and the bending energy alone), the result's smallest angle;
@@ -19,12 +20,16 @@
 //    evaluation: the call with number_of_iterations(0)), energy and gradient evaluations
 //    (their count times the time of one), and the rest (directions, active sets,
 //    projections);
+//  - the same driver built with CGAL's flags (-frounding-math, as through CGAL::CGAL) and
+//    without -frounding-math (default_call_variant.h), runs alternating: both times, their
+//    ratio, and whether both gave the same points;
 //  - two yardsticks on the same mesh: CGAL's smooth_shape (10 iterations, time 0.03 h^2) and
 //    one CHOLMOD supernodal factorization of the cotan stiffness matrix S (when CHOLMOD is
 //    found), with the default call's time as a ratio of each.
 // run_scaling.sh runs it over sizes and fits the growth exponent.
 
 #include "benchmark_support.h"
+#include "default_call_variant.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
@@ -32,11 +37,16 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_order.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 using benchmark::Mesh;
 using benchmark::Point;
@@ -47,6 +57,11 @@ int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
   const int runs = arguments.runs;
+#ifdef CGAL_LINKED_WITH_TBB
+  const int threads = std::stoi(arguments.option("threads", "0"));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            threads > 0 ? std::size_t(threads) : std::size_t(tbb::this_task_arena::max_concurrency()));
+#endif
   Mesh base;
   std::string name;
   if(!benchmark::read_base_mesh(arguments, base, name))
@@ -72,7 +87,7 @@ int main(int argc, char* argv[])
       m.point(v) = input[v.idx()];
   };
 
-  std::cout << name << " Loop subdivided " << level << " times: " << num_vertices(noisy) << " vertices, "
+  std::cout << benchmark::machine_description() << "\n" << name << " Loop subdivided " << level << " times: " << num_vertices(noisy) << " vertices, "
             << num_faces(noisy) << " triangles; noise and epsilon 0.25 h = " << eps << "; medians of " << runs
             << " runs\n";
 
@@ -101,6 +116,32 @@ int main(int argc, char* argv[])
     restore(noisy);
     return seconds;
   });
+  // The two builds alternate, so that both see the machine in the same state.
+  std::vector<double> with_flags, without_flag;
+  std::vector<Point> with_flags_points;
+  bool same_points = true;
+  for(int run = 0; run < runs; ++run)
+  {
+    auto start = std::chrono::steady_clock::now();
+    benchmark::default_call_with_cgal_flags(noisy, eps);
+    with_flags.push_back(benchmark::seconds_since(start));
+    with_flags_points.clear();
+    for(auto v : vertices(noisy))
+      with_flags_points.push_back(noisy.point(v));
+    restore(noisy);
+    start = std::chrono::steady_clock::now();
+    benchmark::default_call_without_rounding_math(noisy, eps);
+    without_flag.push_back(benchmark::seconds_since(start));
+    for(auto v : vertices(noisy))
+      same_points = same_points && noisy.point(v) == with_flags_points[v.idx()];
+    restore(noisy);
+  }
+  const auto median = [](std::vector<double> t) {
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+  };
+  const double flags_seconds = median(with_flags), no_flag_seconds = median(without_flag);
+
   const double setup = benchmark::median_seconds(runs, [&] {
     PMP::constrained_fairing(noisy, eps, CGAL::parameters::number_of_iterations(0));
   });
@@ -150,12 +191,15 @@ int main(int argc, char* argv[])
             << "breakdown:         setup " << setup << " s, energy+gradient " << evaluations << " s ("
             << r.number_of_energy_evaluations << " x " << evaluation << " s), other " << seconds - setup - evaluations
             << " s; factorization and linear solves: none\n"
+            << "rounding math:     with CGAL's flags (-frounding-math) " << flags_seconds << " s, without "
+            << no_flag_seconds << " s: " << flags_seconds / no_flag_seconds << " times; "
+            << (same_points ? "the same points" : "different points") << "\n"
             << "smooth_shape:      " << smoothing << " s (10 iterations): the default call takes "
             << seconds / smoothing << " of it\n";
   if(factorization > 0)
     std::cout << "CHOLMOD factor S:  " << factorization << " s: the default call takes " << seconds / factorization
               << " times it\n";
   std::cout << "row: " << num_faces(noisy) << " " << seconds << " " << peak / triangles << " " << r.number_of_iterations
-            << " " << smoothing << " " << factorization << std::endl;
+            << " " << smoothing << " " << factorization << " " << flags_seconds << " " << no_flag_seconds << std::endl;
   return EXIT_SUCCESS;
 }

@@ -15,7 +15,7 @@ for level in $levels; do
   echo
   sed -n 's/^row: //p' "$output" >> "$rows"
 done
-echo "triangles  seconds  bytes/triangle  iterations  smooth_shape_s  cholmod_factor_s"
+echo "triangles  seconds  bytes/triangle  iterations  smooth_shape_s  cholmod_factor_s  with_rounding_math_s  without_rounding_math_s"
 cat "$rows"
 awk 'NR == 1 {t0 = $1; s0 = $2} {t1 = $1; s1 = $2}
      END {if (NR > 1) printf "time grows as n^%.2f from %d to %d triangles\n", log(s1 / s0) / log(t1 / t0), t0, t1}' "$rows"
