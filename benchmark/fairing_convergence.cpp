@@ -41,7 +41,7 @@ namespace {
 // The sum of squared distances of the vertices of `from` to the surface of `to`.
 double squared_distances_to(const Mesh& from, const Mesh& to)
 {
-  const benchmark::Tree tree(faces(to).first, faces(to).second, to);
+  benchmark::Tree tree(faces(to).first, faces(to).second, to);
   tree.accelerate_distance_queries();
   double sum = 0;
   for(auto v : vertices(from))

@@ -122,8 +122,11 @@ protected:
   // The rounding error of vertex i's coordinates, whose set has size `size`.
   double rounding_error(std::size_t i, double size) const
   {
+    // constexpr: libstdc++'s denorm_min() converts a long double literal inexactly, which
+    // -frounding-math (in every CGAL build) leaves to run time, as x87 code in this loop.
+    constexpr double smallest_subnormal = std::numeric_limits<double>::denorm_min();
     return (std::max)(std::numeric_limits<double>::epsilon() * (point(m_X0, i).template lpNorm<Eigen::Infinity>() + size),
-                      std::numeric_limits<double>::denorm_min());
+                      smallest_subnormal);
   }
 
   const Points& m_X0;

@@ -1,0 +1,17 @@
+#!/bin/sh
+# Checks that the package's functions in a program built with CGAL's flags hold no x87
+# instruction. Under -frounding-math (which CGAL::CGAL adds for GCC) GCC leaves the conversion of
+# an inexact long double constant, such as libstdc++'s denorm_min(), to run time, as x87 code;
+# in a per-vertex loop that code made the whole call twice as slow on some CPUs.
+#
+#   check_no_x87.sh OBJDUMP PROGRAM
+set -eu
+found=$("$1" -d --no-show-raw-insn "$2" | awk -F '\t' '
+  /^[0-9a-f]+ </ { name = $0; package = index(name, "19Constrained_fairing") > 0 }
+  package && $2 ~ /^f[a-z]+/ { print name; package = 0 }')
+if [ -n "$found" ]; then
+  echo "x87 code in the package's functions of $2:"
+  echo "$found" | c++filt | cut -c1-300
+  exit 1
+fi
+echo "no x87 code in the package's functions of $2"
