@@ -134,6 +134,13 @@ public:
     }
     report.final_energy = E;
     report.energy_evaluations = m_search.evaluations() - evaluations_before + 1;
+    // A run starts with no pairs: their memory, nearly half the solver's, is returned for what
+    // runs between two runs (fold repair's tests).
+    for(std::size_t k = 0; k < memory; ++k)
+    {
+      m_s[k].resize(0, 3);
+      m_y[k].resize(0, 3);
+    }
     return report;
   }
 
