@@ -21,6 +21,7 @@
 #endif
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 #endif
@@ -190,11 +191,13 @@ inline std::string machine_description()
       break;
     }
 #ifdef CGAL_LINKED_WITH_TBB
-  const int threads = tbb::this_task_arena::max_concurrency(), cpus = tbb::info::default_concurrency();
+  const int cpus = tbb::info::default_concurrency();
+  const int threads = (std::min)(tbb::this_task_arena::max_concurrency(),
+                                 int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
 #else
   const int threads = 1, cpus = 1;
 #endif
-  return model + ", " + std::to_string(cpus) + " CPUs, " + std::to_string(threads) + " threads";
+  return model + ", " + std::to_string(cpus) + " CPUs, " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
 }
 
 } // namespace benchmark

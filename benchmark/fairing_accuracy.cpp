@@ -123,6 +123,7 @@ double geometric_mean(const std::vector<double>& values)
 
 int main(int argc, char* argv[])
 {
+  std::cout << benchmark::machine_description() << std::endl; // the CPU and threads of every figure below
   const Arguments arguments(argc, argv);
   const std::string demo = arguments.option("demo", CONSTRAINED_FAIRING_DEMO_DATA);
   // the accurate objective's fidelity weight (the fairest objective has none)

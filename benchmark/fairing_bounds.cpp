@@ -32,6 +32,7 @@ using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 
 int main(int argc, char* argv[])
 {
+  std::cout << benchmark::machine_description() << std::endl; // the CPU and threads of every figure below
   const benchmark::Arguments arguments(argc, argv);
   Mesh base, noisy;
   std::string name;

@@ -101,6 +101,7 @@ void table1_protocol(const Mesh& noisy, double eps, const PMP::Constrained_fairi
 
 int main(int argc, char* argv[])
 {
+  std::cout << benchmark::machine_description() << std::endl; // the CPU and threads of every figure below
   const benchmark::Arguments arguments(argc, argv);
   const std::vector<std::string>& args = arguments.positional;
   const int runs = arguments.runs;

@@ -100,6 +100,7 @@ void write_trace(const Trace& trace, const std::string& path)
 
 int main(int argc, char* argv[])
 {
+  std::cout << benchmark::machine_description() << std::endl; // the CPU and threads of every figure below
   const benchmark::Arguments arguments(argc, argv);
   Mesh base;
   std::string name;

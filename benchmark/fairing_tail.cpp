@@ -33,6 +33,7 @@ using Vector = benchmark::K::Vector_3;
 
 int main(int argc, char* argv[])
 {
+  std::cout << benchmark::machine_description() << std::endl; // the CPU and threads of every figure below
   const benchmark::Arguments arguments(argc, argv);
   Mesh base;
   std::string name;

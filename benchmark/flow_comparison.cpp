@@ -40,6 +40,7 @@ double largest_move(const Mesh& result, const Mesh& input)
 
 int main(int argc, char* argv[])
 {
+  std::cout << benchmark::machine_description() << std::endl; // the CPU and threads of every figure below
   if(argc < 5)
   {
     std::cerr << "usage: flow_comparison NOISY EPS FAIRED_OUT FLOW_OUT" << std::endl;
