@@ -154,6 +154,27 @@ struct Arguments
   }
 };
 
+// `--threads K`: the library's loops run on at most K threads (default: all) while it lives.
+class Thread_limit
+{
+public:
+#ifdef CGAL_LINKED_WITH_TBB
+  explicit Thread_limit(const Arguments& arguments)
+    : m_limit(tbb::global_control::max_allowed_parallelism, threads(std::stoi(arguments.option("threads", "0"))))
+  {}
+
+private:
+  static std::size_t threads(int k)
+  {
+    return k > 0 ? std::size_t(k) : std::size_t(tbb::this_task_arena::max_concurrency());
+  }
+
+  tbb::global_control m_limit;
+#else
+  explicit Thread_limit(const Arguments&) {}
+#endif
+};
+
 // The base mesh of a speed benchmark: the command line's first positional argument, else the
 // bundled bunny. Says on stderr which file could not be read.
 inline bool read_base_mesh(const Arguments& arguments, Mesh& base, std::string& name)

@@ -28,10 +28,6 @@
 #include <iostream>
 #include <string>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
-
 using benchmark::Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
@@ -65,11 +61,7 @@ bool ball_holds(const Mesh& result, const Mesh& input, double eps)
 int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
-#ifdef CGAL_LINKED_WITH_TBB
-  const int threads = std::stoi(arguments.option("threads", "0"));
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                            threads > 0 ? std::size_t(threads) : std::size_t(tbb::this_task_arena::max_concurrency()));
-#endif
+  const benchmark::Thread_limit thread_limit(arguments);
   Mesh base;
   std::string name;
   if(!benchmark::read_base_mesh(arguments, base, name))

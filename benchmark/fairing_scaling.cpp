@@ -45,10 +45,6 @@
 #include <string>
 #include <vector>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
-
 using benchmark::Mesh;
 using benchmark::Point;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -58,11 +54,7 @@ int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
   const int runs = arguments.runs;
-#ifdef CGAL_LINKED_WITH_TBB
-  const int threads = std::stoi(arguments.option("threads", "0"));
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                            threads > 0 ? std::size_t(threads) : std::size_t(tbb::this_task_arena::max_concurrency()));
-#endif
+  const benchmark::Thread_limit thread_limit(arguments);
   Mesh base;
   std::string name;
   if(!benchmark::read_base_mesh(arguments, base, name))
