@@ -80,7 +80,8 @@ int main(int argc, char* argv[])
       m.point(v) = input[v.idx()];
   };
 
-  std::cout << benchmark::machine_description() << "\n" << name << " Loop subdivided " << level << " times: " << num_vertices(noisy) << " vertices, "
+  std::cout << benchmark::machine_description() << "\n"
+            << name << " Loop subdivided " << level << " times: " << num_vertices(noisy) << " vertices, "
             << num_faces(noisy) << " triangles; noise and epsilon 0.25 h = " << eps << "; medians of " << runs
             << " runs\n";
 
