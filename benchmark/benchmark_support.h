@@ -9,9 +9,10 @@
 
 #include "../test/seeded_noise.h"
 
+#include "front_end/Mean_edge_length.h"
+
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -41,7 +42,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
+using Constrained_fairing_front_end::mean_edge_length;
 using test::add_noise;
 
 #ifdef CGAL_CONSTRAINED_FAIRING_HAS_CHOLMOD

@@ -33,10 +33,10 @@
 #include "default_call_variant.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Thin_plate_hessian.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Vertex_order.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hilbert_order.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Thin_plate_hessian.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -162,7 +162,7 @@ int main(int argc, char* argv[])
     put(vertex_index, v, std::size_t(rank[v.idx()]));
     X0.row(rank[v.idx()]) << input[v.idx()].x(), input[v.idx()].y(), input[v.idx()].z();
   }
-  CF::Vertex_scales K;
+  CF::Stiffness_and_reach K;
   double evaluation = 0, factorization = 0;
   {
     const CF::Hinge_mesh mesh(noisy, vertex_index);

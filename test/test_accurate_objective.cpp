@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The accurate objective (Constrained_fairing_objective::ACCURATE): the fidelity term's
-// gradient against finite differences, its anchor (Bilateral_normal_filter.h) denoising without
+// gradient against finite differences, its anchor (Fidelity_anchor.h) denoising without
 // flattening or shrinking and within the bound, the user's bound exactly in double, the
 // objective never rising with every method, the result closer to the true surface than the
 // fairest one on a real mesh, and bad fidelity weights rejected with the mesh untouched.
@@ -10,10 +10,10 @@
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bilateral_normal_filter.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_objective.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Sliver_barrier.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_anchor.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_tree.h>
@@ -244,7 +244,7 @@ void check_anchor()
     }
     X = X0;
     const CF::Hinge_mesh hinges(clean, get(boost::vertex_index, clean));
-    CF::Bilateral_normal_filter(hinges).apply(CF::Ball_bound(X0, t), X);
+    CF::Fidelity_anchor(hinges).apply(CF::Ball_bound(X0, t), X);
     for(Eigen::Index i = 0; i < X0.rows(); ++i)
       CHECK((X.row(i) - X0.row(i)).squaredNorm() <= t * t);
   };

@@ -7,7 +7,7 @@
 
 #include "test_support.h"
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -234,7 +234,7 @@ void check_stiffness()
   const Indexed x(m);
   CF::Bending_energy E(x.hinges, x.X);
   CF::Points G;
-  CF::Vertex_scales S, S_moved, S_scaled;
+  CF::Stiffness_and_reach S, S_moved, S_scaled;
   E.value_and_gradient(x.X, G, &S);
   const Eigen::VectorXd& K = S.stiffness;
   CHECK(K.size() == x.X.rows() && (K.array() > 0).all());

@@ -9,8 +9,8 @@
 
 #include "test_support.h"
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Active_set.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Active_set.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 
 #include <type_traits>
 

@@ -11,9 +11,10 @@
 
 #include "test_support.h"
 
+#include "front_end/Mean_edge_length.h"
+
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Sliver_barrier.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -101,7 +102,7 @@ void check_gradient()
   const std::size_t slivers = make_caps(x);
   CF::Sliver_barrier b(x.hinges, X0, 100);
   CF::Points G = CF::Points::Zero(x.X.rows(), 3);
-  CF::Vertex_scales scales;
+  CF::Stiffness_and_reach scales;
   scales.stiffness = Eigen::VectorXd::Zero(x.X.rows());
   const double value = b.add_gradient(x.X, G, &scales);
   CHECK(value > 0 && slivers > 10);
@@ -134,14 +135,14 @@ void check_extreme_scales()
   Indexed x(m);
   const CF::Points X0 = x.X;
   make_caps(x);
-  const auto evaluate = [&](double s, CF::Points& G, CF::Vertex_scales& scales) {
+  const auto evaluate = [&](double s, CF::Points& G, CF::Stiffness_and_reach& scales) {
     G = CF::Points::Zero(x.X.rows(), 3);
     scales.stiffness = Eigen::VectorXd::Zero(x.X.rows());
     CF::Sliver_barrier b(x.hinges, s * X0, 100);
     return b.add_gradient(s * x.X, G, &scales);
   };
   CF::Points G, GY;
-  CF::Vertex_scales K, KY;
+  CF::Stiffness_and_reach K, KY;
   const double B = evaluate(1, G, K);
   CHECK(B > 0);
   for(double s : {1e-100, 1e-80, 1e-6, 1e6, 1e80, 1e100})
@@ -179,7 +180,7 @@ void check_elephant()
 {
   Mesh clean;
   CHECK(CGAL::IO::read_polygon_mesh(CONSTRAINED_FAIRING_DATA_DIR "/elephant.off", clean));
-  const double eps = 0.5 * CF::mean_edge_length(clean);
+  const double eps = 0.5 * Constrained_fairing_front_end::mean_edge_length(clean);
   Mesh noisy = clean;
   test::add_noise(noisy, eps, 1);
   const std::vector<Point> input = test::points(noisy);

@@ -8,10 +8,11 @@
 
 #include "seeded_noise.h"
 
+#include "front_end/Mean_edge_length.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Hinge_mesh.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -234,7 +235,7 @@ inline double plain_bending_energy(const Mesh& m)
   return sum;
 }
 
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
+using Constrained_fairing_front_end::mean_edge_length;
 
 } // namespace test
 

@@ -14,8 +14,10 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_file.h>
+
+#include "front_end/Epsilon_grammar.h"
+#include "front_end/Mean_edge_length.h"
+#include "front_end/Mesh_file.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -75,32 +77,14 @@ options:
   --help                   this text
 )";
 
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Captured_cerr;
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::make_triangle_mesh;
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::mean_edge_length;
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::read_PLY_soup_file;
-using CGAL::Polygon_mesh_processing::internal::Constrained_fairing::read_polygon_soup_file;
-
-// "0.002" is absolute, "0.25h" is 0.25 times the mean edge length. Returns false if malformed.
-bool parse_epsilon(const std::string& text, const Mesh& mesh, double& epsilon)
-{
-  const bool relative = !text.empty() && text.back() == 'h';
-  const std::string number = relative ? text.substr(0, text.size() - 1) : text;
-  std::size_t used = 0;
-  try
-  {
-    epsilon = std::stod(number, &used);
-  }
-  catch(const std::exception&)
-  {
-    return false;
-  }
-  if(used != number.size())
-    return false;
-  if(relative)
-    epsilon *= mean_edge_length(mesh);
-  return true;
-}
+using Constrained_fairing_front_end::default_epsilon_text;
+using Constrained_fairing_front_end::Epsilon_text;
+using Constrained_fairing_front_end::make_triangle_mesh;
+using Constrained_fairing_front_end::mean_edge_length;
+using Constrained_fairing_front_end::parse_epsilon;
+using Constrained_fairing_front_end::read_PLY_soup_file;
+using Constrained_fairing_front_end::read_polygon_soup_file;
+using Constrained_fairing_front_end::unwritable_file_reason;
 
 using Polygon = std::vector<std::size_t>;
 
@@ -132,8 +116,7 @@ std::string write_mesh(const std::string& out, const Mesh& mesh)
   std::filesystem::path partial(out);
   partial.replace_filename("." + partial.stem().string() + ".partial" + partial.extension().string());
   std::error_code error;
-  Captured_cerr cgal;
-  if(CGAL::IO::write_polygon_mesh(partial.string(), mesh, CGAL::parameters::stream_precision(17)))
+  if(CGAL::IO::write_polygon_mesh(partial.string(), mesh, CGAL::parameters::stream_precision(17).verbose(false)))
   {
     std::filesystem::rename(partial, out, error);
     if(!error)
@@ -141,7 +124,7 @@ std::string write_mesh(const std::string& out, const Mesh& mesh)
   }
   std::error_code ignored;
   std::filesystem::remove(partial, ignored);
-  return "cannot write " + out + (error ? " (" + error.message() + ")" : cgal.reason());
+  return "cannot write " + out + (error ? " (" + error.message() + ")" : unwritable_file_reason(partial.string()));
 }
 
 // Parses "HX,HY,HZ" (three non-negative numbers). Returns false if malformed.
@@ -158,7 +141,8 @@ struct Options
 {
   std::vector<std::string> positional;
   bool box = false, fixed_border = false, accurate = false, help = false;
-  std::string eps, extents, radius_property, error;
+  std::optional<std::string> eps;
+  std::string extents, radius_property, error;
 };
 
 Options parse_options(int argc, char* argv[])
@@ -182,7 +166,7 @@ Options parse_options(int argc, char* argv[])
     else if(a == "--accurate")
       o.accurate = true;
     else if(a == "--eps")
-      value(o.eps);
+      value(o.eps.emplace());
     else if(a == "--box-extents")
       value(o.extents);
     else if(a == "--radius-from-property")
@@ -312,6 +296,9 @@ int main(int argc, char* argv[])
   const std::filesystem::path folder = std::filesystem::path(out).parent_path();
   if(!folder.empty() && !std::filesystem::is_directory(folder))
     return fail("cannot write " + out + " (no folder " + folder.string() + ")");
+  const Epsilon_text eps = parse_epsilon(options.eps.value_or(default_epsilon_text));
+  if(!eps.error.empty())
+    return fail("--eps " + eps.error);
   std::array<double, 3> extents{0, 0, 0};
   if(!options.extents.empty() && !parse_extents(options.extents, extents))
     return fail("--box-extents must be three non-negative numbers HX,HY,HZ (got " + options.extents + ")");
@@ -323,21 +310,21 @@ int main(int argc, char* argv[])
     return fail(read_error);
 
   // EPS caps every size; without it, the largest size the options give, or 0.25h.
-  std::string eps_text = options.eps.empty() ? "0.25h" : options.eps;
+  std::string eps_text = options.eps.value_or(default_epsilon_text);
   double epsilon = 0;
-  if(eps_text == "auto")
+  if(options.eps || (options.extents.empty() && options.radius_property.empty()))
   {
-    epsilon = PMP::estimate_noise_level(mesh);
-    if(!(epsilon > 0))
-      return fail("cannot estimate the noise level of so small a mesh; give --eps");
-    std::ostringstream text;
-    text << "auto, " << epsilon / mean_edge_length(mesh) << "h";
-    eps_text = text.str();
-  }
-  else if(!options.eps.empty() || (options.extents.empty() && options.radius_property.empty()))
-  {
-    if(!parse_epsilon(eps_text, mesh, epsilon))
-      return fail("--eps must be a number, a number followed by h, or auto (got " + eps_text + ")");
+    if(eps.kind == Epsilon_text::Kind::AUTO)
+    {
+      epsilon = PMP::estimate_noise_level(mesh);
+      if(!(epsilon > 0))
+        return fail("cannot estimate the noise level of so small a mesh; give --eps");
+      std::ostringstream text;
+      text << "auto, " << epsilon / mean_edge_length(mesh) << "h";
+      eps_text = text.str();
+    }
+    else
+      epsilon = eps.kind == Epsilon_text::Kind::RELATIVE ? eps.value * mean_edge_length(mesh) : eps.value;
   }
   else
   {

@@ -220,7 +220,7 @@ class _Progress:
     def __init__(self, progress, options):
         self._progress = progress
         self._total = (options.max_iterations if options.max_iterations is not None
-                       else _core.default_max_iterations(options.method))
+                       else _core.default_settings(options.method)["max_iterations"])
         self._bar = None
         self._shown = 0.0
 

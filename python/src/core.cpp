@@ -11,8 +11,10 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mean_edge_length.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh_file.h>
+
+#include "front_end/Epsilon_grammar.h"
+#include "front_end/Mean_edge_length.h"
+#include "front_end/Mesh_file.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -41,6 +43,7 @@ namespace py = pybind11;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
 namespace CF = PMP::internal::Constrained_fairing;
+namespace FE = Constrained_fairing_front_end;
 
 namespace {
 
@@ -96,7 +99,7 @@ struct Array_map
 };
 
 // Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the checks of
-// Polygon_soup_check.h; returns the first defect found, and leaves `mesh` empty then. The defects
+// front_end/Polygon_soup_check.h; returns the first defect found, and leaves `mesh` empty then. The defects
 // a mesh can hold (an empty one, one without faces, ...) are left to constrained_fairing().
 CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces, Mesh& mesh)
 {
@@ -108,12 +111,10 @@ CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces
     {
       const std::int64_t v = f[3 * i + c];
       if(v < 0)
-        return {PMP::Constrained_fairing_defect::INVALID_FACE, "face " + std::to_string(i) + " refers to vertex " +
-                                                                 std::to_string(v) + ", but there are " +
-                                                                 std::to_string(n) + " vertices"};
+        return CF::missing_vertex_error(i, v, n);
       triangles[i][c] = static_cast<std::size_t>(v);
     }
-  if(CF::Input_error error = CF::polygon_soup_error(n, triangles))
+  if(CF::Input_error error = FE::polygon_soup_error(n, triangles))
     return error;
   std::vector<Point> points;
   points.reserve(n);
@@ -190,7 +191,7 @@ private:
   std::unique_ptr<py::error_already_set> m_error;
 };
 
-// The options of a call, each unset one taking the library's default.
+// The options of a call as the user gave them: each unset one keeps the library's default.
 struct Options
 {
   double epsilon = 0;
@@ -199,20 +200,33 @@ struct Options
   PMP::Constrained_fairing_objective objective = PMP::Constrained_fairing_objective::FAIREST;
   std::optional<double> fidelity_weight, sliver_barrier_weight, energy_decrease_threshold;
   std::optional<std::size_t> max_iterations, initial_smoothing_steps, conjugate_gradient_iterations;
+
+  // The library's settings (Fairing_settings.h), its defaults where the user gave nothing.
+  CF::Fairing_settings settings() const
+  {
+    CF::Fairing_settings settings(method);
+    settings.objective = objective;
+    if(fidelity_weight)
+      settings.fidelity_weight = *fidelity_weight;
+    if(sliver_barrier_weight)
+      settings.sliver_barrier_weight = *sliver_barrier_weight;
+    if(energy_decrease_threshold)
+      settings.options.threshold = *energy_decrease_threshold;
+    if(max_iterations)
+      settings.options.max_iterations = *max_iterations;
+    if(initial_smoothing_steps)
+      settings.options.smoothing_steps = *initial_smoothing_steps;
+    if(conjugate_gradient_iterations)
+      settings.options.cg_iterations = *conjugate_gradient_iterations;
+    return settings;
+  }
 };
 
-template <typename NamedParameters>
-PMP::Constrained_fairing_result call_library(const std::vector<face_descriptor>* region, Mesh& mesh, double epsilon,
-                                             const NamedParameters& np)
-{
-  return region ? PMP::constrained_fairing(*region, mesh, epsilon, np) : PMP::constrained_fairing(mesh, epsilon, np);
-}
-
 // constrained_fairing() on the arrays, which the Python layer has checked for shape (every
-// per-vertex array has a row per vertex, the region's faces are distinct and exist). Every
-// per-vertex map is given, filled with what the call without it would use where the user gave
-// none (epsilon, no fixed vertex, the input positions as box centres): the result is the same,
-// bit for bit, with one compiled pipeline per bound shape.
+// per-vertex array has a row per vertex, the region's faces are distinct and exist), with the
+// settings the user gave. Every per-vertex map is given, filled with what the call without it
+// would use where the user gave none (epsilon, no fixed vertex, the input positions as box
+// centres): the result is the same, bit for bit, with one compiled pipeline per bound shape.
 py::dict fair(const Float_array& vertices, const Index_array& faces, const Options& options,
               const std::optional<Float_array>& tolerance, const std::optional<Mask_array>& fixed,
               const std::optional<Float_array>& box_half_extents, const std::optional<Float_array>& box_centers,
@@ -254,28 +268,16 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
       if(region)
         for(py::ssize_t k = 0; k < region->shape(0); ++k)
           region_faces.push_back(face_descriptor(static_cast<Mesh::size_type>(region->data()[k])));
-      const CF::Solver_options defaults = CF::default_options(options.method);
-      const unsigned int iterations = static_cast<unsigned int>(options.max_iterations.value_or(defaults.max_iterations));
-      // The named parameters, built from the innermost; each holds a copy of the pack it extends.
-      const auto counts = CFP::conjugate_gradient_iterations(
-        options.conjugate_gradient_iterations.value_or(defaults.cg_iterations),
-        CFP::iteration_callback(std::ref(callback),
-                                CGAL::parameters::number_of_iterations(iterations).vertex_is_constrained_map(
-                                  Row_map<bool, 1, bool>{fixed ? fixed->data() : none_fixed.get()})));
-      const auto stopping = CFP::energy_decrease_threshold(
-        options.energy_decrease_threshold.value_or(defaults.threshold),
-        CFP::initial_smoothing_steps(options.initial_smoothing_steps.value_or(defaults.smoothing_steps), counts));
-      const auto objective = CFP::fairing_method(
-        options.method,
-        CFP::fairing_objective(
-          options.objective,
-          CFP::fidelity_weight(options.fidelity_weight.value_or(CF::default_fidelity_weight),
-                               CFP::sliver_barrier_weight(
-                                 options.sliver_barrier_weight.value_or(CF::default_sliver_barrier_weight), stopping))));
+      const CF::Fairing_settings settings = options.settings();
       const auto np = CFP::vertex_tolerance_map(
         Row_map<double, 1>{tolerance_data},
-        CFP::vertex_deviation_map(Array_map<double>{deviation_data},
-                                  CFP::vertex_at_bound_map(Array_map<bool>{at_bound_data}, objective)));
+        CFP::vertex_deviation_map(
+          Array_map<double>{deviation_data},
+          CFP::vertex_at_bound_map(Array_map<bool>{at_bound_data},
+                                   CFP::iteration_callback(std::ref(callback),
+                                                           CGAL::parameters::vertex_is_constrained_map(
+                                                             Row_map<bool, 1, bool>{fixed ? fixed->data()
+                                                                                          : none_fixed.get()})))));
       const std::vector<face_descriptor>* faces_to_fair = region ? &region_faces : nullptr;
       // The box pipeline also serves the ball asked for with box arrays: the library then
       // reports BOX_WITH_BALL.
@@ -286,8 +288,8 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
         if(!box_half_extents)
           cube.assign(3 * n, options.epsilon);
         const double* extents_data = box_half_extents ? box_half_extents->data() : cube.data();
-        result = call_library(
-          faces_to_fair, mesh, options.epsilon,
+        result = CF::run_fairing_driver(
+          faces_to_fair, mesh, options.epsilon, settings,
           CFP::deviation_bound(box ? PMP::Deviation_bound::BOX : PMP::Deviation_bound::BALL,
                                CFP::vertex_box_half_extents_map(
                                  Row_map<std::array<double, 3>, 3>{extents_data},
@@ -295,7 +297,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
                                    Row_map<Point, 3>{box_centers ? box_centers->data() : vertices.data()}, np))));
       }
       else
-        result = call_library(faces_to_fair, mesh, options.epsilon, np);
+        result = CF::run_fairing_driver(faces_to_fair, mesh, options.epsilon, settings, np);
       for(vertex_descriptor v : mesh.vertices())
       {
         const Point& q = mesh.point(v);
@@ -343,14 +345,14 @@ py::tuple read_mesh(const std::string& path)
   std::string error;
   {
     py::gil_scoped_release release;
-    error = CF::read_polygon_soup_file(path, points, polygons);
+    error = FE::read_polygon_soup_file(path, points, polygons);
     const bool triangles =
       std::all_of(polygons.begin(), polygons.end(), [](const std::vector<std::size_t>& p) { return p.size() == 3; });
     if(error.empty() && !triangles)
     {
       Mesh mesh;
       std::size_t triangulated = 0;
-      error = CF::make_triangle_mesh(path, points, polygons, mesh, triangulated);
+      error = FE::make_triangle_mesh(path, points, polygons, mesh, triangulated);
       points.assign(mesh.points().begin(), mesh.points().end());
       polygons.clear();
       for(face_descriptor f : mesh.faces())
@@ -393,9 +395,8 @@ void write_mesh(const std::string& path, const Float_array& vertices, const Inde
     for(std::size_t i = 0; i < m; ++i)
       for(std::size_t c = 0; c < 3; ++c)
         triangles[i][c] = static_cast<std::size_t>(faces.data()[3 * i + c]);
-    CF::Captured_cerr cgal;
-    if(!CGAL::IO::write_polygon_soup(path, points, triangles, CGAL::parameters::stream_precision(17)))
-      error = "cannot write " + path + cgal.reason();
+    if(!CGAL::IO::write_polygon_soup(path, points, triangles, CGAL::parameters::stream_precision(17).verbose(false)))
+      error = "cannot write " + path + FE::unwritable_file_reason(path);
   }
   if(!error.empty())
     throw py::value_error(error);
@@ -485,7 +486,7 @@ PYBIND11_MODULE(_core, m)
   m.def(
     "mean_edge_length",
     [](const Float_array& vertices, const Index_array& faces) {
-      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return CF::mean_edge_length(mesh); });
+      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return FE::mean_edge_length(mesh); });
     },
     py::arg("vertices"), py::arg("faces"));
   m.def(
@@ -495,9 +496,34 @@ PYBIND11_MODULE(_core, m)
     },
     py::arg("vertices"), py::arg("faces"));
   m.def(
-    "default_max_iterations",
-    [](PMP::Constrained_fairing_method method) { return CF::default_options(method).max_iterations; },
+    "default_settings",
+    [](PMP::Constrained_fairing_method method) {
+      const CF::Fairing_settings settings(method);
+      py::dict d;
+      d["max_iterations"] = settings.options.max_iterations;
+      d["energy_decrease_threshold"] = settings.options.threshold;
+      d["energy_decrease_window"] = settings.options.window;
+      d["initial_smoothing_steps"] = settings.options.smoothing_steps;
+      d["conjugate_gradient_iterations"] = settings.options.cg_iterations;
+      d["fidelity_weight"] = settings.fidelity_weight;
+      d["sliver_barrier_weight"] = settings.sliver_barrier_weight;
+      d["objective"] = settings.objective;
+      return d;
+    },
     py::arg("method"));
+  m.def(
+    "parse_epsilon",
+    [](const std::string& text) {
+      const FE::Epsilon_text eps = FE::parse_epsilon(text);
+      if(!eps.error.empty())
+        throw py::value_error("eps " + eps.error);
+      const char* kind = eps.kind == FE::Epsilon_text::Kind::AUTO       ? "auto"
+                         : eps.kind == FE::Epsilon_text::Kind::RELATIVE ? "h"
+                                                                         : "value";
+      return py::make_tuple(kind, eps.value);
+    },
+    py::arg("text"));
+  m.attr("default_epsilon") = FE::default_epsilon_text;
   m.def("read_mesh", &read_mesh, py::arg("path"));
   m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
   m.def("max_threads", &max_threads);

@@ -6,16 +6,11 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_driver.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_driver.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
 
-#include <CGAL/assertions.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/boost/graph/named_params_helper.h>
 
-#include <algorithm>
-#include <cstddef>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -24,41 +19,13 @@ namespace internal {
 namespace Constrained_fairing {
 
 // The named parameters read once; the driver does the rest.
+// The settings read from `np` once; the per-vertex maps, the callback and the linear solver are
+// read by the driver.
 template <typename TriangleMesh, typename FaceRange, typename NamedParameters>
 Constrained_fairing_result constrained_fairing(const FaceRange* region, TriangleMesh& tmesh, double epsilon,
                                                const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using Sparse_linear_solver =
-    typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t, NamedParameters,
-                                                 Default_sparse_linear_solver>::type;
-
-  Fairing_settings settings(
-    choose_parameter(get_parameter(np, fairing_method), Constrained_fairing_method::QUASI_NEWTON));
-  Solver_options& options = settings.options;
-  options.max_iterations = static_cast<std::size_t>(
-    choose_parameter(get_parameter(np, internal_np::number_of_iterations), options.max_iterations));
-  options.threshold = choose_parameter(get_parameter(np, energy_decrease_threshold), options.threshold);
-  options.cg_iterations = (std::max)(std::size_t(1), static_cast<std::size_t>(choose_parameter(
-    get_parameter(np, conjugate_gradient_iterations), options.cg_iterations)));
-  options.smoothing_steps =
-    static_cast<std::size_t>(choose_parameter(get_parameter(np, initial_smoothing_steps), options.smoothing_steps));
-  settings.fidelity_weight = choose_parameter(get_parameter(np, fidelity_weight), settings.fidelity_weight);
-  settings.sliver_barrier_weight =
-    choose_parameter(get_parameter(np, sliver_barrier_weight), settings.sliver_barrier_weight);
-  // A fidelity term of weight 0 is none: the call is then that of the fairest objective.
-  settings.accurate = choose_parameter(get_parameter(np, fairing_objective), Constrained_fairing_objective::FAIREST) ==
-                        Constrained_fairing_objective::ACCURATE &&
-                      settings.fidelity_weight > 0;
-  CGAL_precondition(options.threshold >= 0);
-
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_property_map(CGAL::vertex_point, tmesh));
-  const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
-  Fairing_driver<TriangleMesh, std::remove_const_t<decltype(vpm)>, Sparse_linear_solver> driver(tmesh, vpm, settings,
-                                                                                                 solver);
-  return driver.run(region, epsilon, np, choose_parameter(get_parameter(np, iteration_callback), Always_continue()));
+  return run_fairing_driver(region, tmesh, epsilon, read_fairing_settings(np), np);
 }
 
 } // namespace Constrained_fairing

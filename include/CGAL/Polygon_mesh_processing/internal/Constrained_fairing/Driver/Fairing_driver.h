@@ -1,0 +1,366 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One call of constrained_fairing(), in the phases of the method:
+//  - check: the mesh, then every value of the input (coordinates, epsilon, weights, the
+//    per-vertex bounds, the input positions in their boxes, the area) in the order of the
+//    user's vertices, so that the first defect is reported and nothing else is done;
+//  - order: the vertices of the part that moves, in the Hilbert order of their input positions
+//    (Hilbert_order.h), the one numbering of everything that follows; the bounds are read
+//    straight into it;
+//  - build: the hinges, the objective (bending energy, barrier against slivers, fidelity);
+//  - start, solve, repair folds: a descent from a smoothed start, then re-seeded descents
+//    around the folds it left (Fold_repair.h), with one solver;
+//  - report and write back: the result, the output maps, and the points that moved.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DRIVER_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DRIVER_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Bound_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_part.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Mesh_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hilbert_order.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_anchor.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Active_set_newton.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_lbfgs.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Smoothed_start.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+template <typename TriangleMesh, typename VertexPointMap, typename SparseLinearSolver>
+class Fairing_driver
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
+  using Part = Fairing_part<TriangleMesh>;
+
+public:
+  Fairing_driver(TriangleMesh& tmesh, const VertexPointMap& vpm, const Fairing_settings& settings,
+                 const SparseLinearSolver& solver)
+    : m_tmesh(tmesh), m_vpm(vpm), m_settings(settings), m_solver(solver),
+      m_vertex_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh))
+  {
+    CGAL_precondition(settings.options.threshold >= 0);
+  }
+
+  // Fairs the faces of `region`, or the whole mesh if it is null, within `epsilon`; `np`
+  // gives the per-vertex bounds (Bound_parameters.h), the fixed vertices and the output maps.
+  template <typename FaceRange, typename NamedParameters, typename Callback>
+  Constrained_fairing_result run(const FaceRange* region, double epsilon, const NamedParameters& np,
+                                 const Callback& callback)
+  {
+    const std::optional<Part> part = check(region, epsilon, np);
+    if(!part)
+      return std::move(m_result);
+    if(part->size() == 0) // an empty face range: nothing to do
+    {
+      m_result.status = Constrained_fairing_status::CONVERGED;
+      return std::move(m_result);
+    }
+    Bound_parameters bounds = order(*part, epsilon, np);
+    const Iteration_callback heard(callback);
+    if(bounds.is_box())
+      fair(*part, region != nullptr, std::move(bounds).box(m_X0), np, heard);
+    else
+      fair(*part, region != nullptr, std::move(bounds).ball(m_X0), np, heard);
+    if(m_result)
+      write_back(*part);
+    return std::move(m_result);
+  }
+
+private:
+  // Records the first defect found; true if there is none.
+  bool accept(Input_error error)
+  {
+    m_result.defect = error.defect;
+    m_result.message = std::move(error.message);
+    return m_result.defect == Constrained_fairing_defect::NONE;
+  }
+
+  // The whole input contract: the mesh, its vertices numbered in messages in the order
+  // vertices(tmesh) lists them, then the part that takes part and its values. Leaves the
+  // part's input points in X0, in the part's order; nothing if there is a defect.
+  template <typename FaceRange, typename NamedParameters>
+  std::optional<Part> check(const FaceRange* region, double epsilon, const NamedParameters& np)
+  {
+    auto user_number = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m_tmesh);
+    std::size_t count = 0;
+    for(auto v : vertices(m_tmesh))
+      put(user_number, v, count++);
+    if(!accept(mesh_error(m_tmesh, user_number)))
+      return std::nullopt;
+    const auto is_constrained = parameters::choose_parameter(
+      parameters::get_parameter(np, internal_np::vertex_is_constrained),
+      CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+    std::optional<Part> part;
+    if(region)
+      part.emplace(*region, m_tmesh, user_number, is_constrained);
+    else
+      part.emplace(m_tmesh, is_constrained);
+    if(part->size() > 0 && !accept(value_error(*part, epsilon, np)))
+      return std::nullopt;
+    return part;
+  }
+
+  template <typename NamedParameters>
+  Input_error value_error(const Part& part, double epsilon, const NamedParameters& np)
+  {
+    m_X0.resize(static_cast<Eigen::Index>(part.size()), 3);
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
+      const Point_3& p = get(m_vpm, v);
+      point(m_X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    });
+    for(std::size_t k = 0; k < part.size(); ++k)
+      if(!point(m_X0, k).allFinite())
+        return non_finite_coordinate_error(part.number(k));
+    if(!(std::isfinite(epsilon) && epsilon > 0))
+      return invalid_epsilon_error(epsilon);
+    if(!(std::isfinite(m_settings.fidelity_weight) && m_settings.fidelity_weight >= 0))
+      return invalid_fidelity_weight_error(m_settings.fidelity_weight);
+    if(!(std::isfinite(m_settings.sliver_barrier_weight) && m_settings.sliver_barrier_weight >= 0))
+      return invalid_sliver_barrier_weight_error(m_settings.sliver_barrier_weight);
+    if(Input_error error = Bound_parameters::check(part, m_X0, epsilon, np))
+      return error;
+    if(!Bending_energy::is_defined(part_triangles(part), m_X0))
+      return no_area_error();
+    return {};
+  }
+
+  // The triangles of the part, its vertices numbered in the part's order.
+  std::vector<std::array<Index, 3> > part_triangles(const Part& part) const
+  {
+    auto place = get(CGAL::dynamic_vertex_property_t<Index>(), m_tmesh);
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) { put(place, v, static_cast<Index>(k)); });
+    std::vector<std::array<Index, 3> > triangles;
+    const auto add = [&](auto f) {
+      const auto h = halfedge(f, m_tmesh);
+      triangles.push_back({get(place, source(h, m_tmesh)), get(place, target(h, m_tmesh)),
+                           get(place, target(next(h, m_tmesh), m_tmesh))});
+    };
+    if(part.triangles().empty())
+      for(auto f : faces(m_tmesh))
+        add(f);
+    else
+      for(auto f : part.triangles())
+        add(f);
+    return triangles;
+  }
+
+  // The input points, the moving vertices and the bounds in the solver's order.
+  template <typename NamedParameters>
+  Bound_parameters order(const Part& part, double epsilon, const NamedParameters& np)
+  {
+    const std::vector<Index> rank = hilbert_rank(m_X0);
+    Bound_parameters bounds;
+    bounds.read(part, rank, epsilon, np);
+    Points X0(m_X0.rows(), 3);
+    m_moving.assign(part.size(), false);
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
+      point(X0, rank[k]) = point(m_X0, k);
+      put(m_vertex_index, v, std::size_t(rank[k]));
+      m_moving[rank[k]] = !part.is_fixed(k);
+    });
+    m_X0.swap(X0);
+    return bounds;
+  }
+
+  // Every step of the method, then the report.
+  template <typename Bound, typename NamedParameters>
+  void fair(const Part& part, bool is_region, const Bound& bound, const NamedParameters& np,
+            const Iteration_callback& callback)
+  {
+    const Hinge_mesh mesh = build_hinges(part, is_region);
+    Fairing_objective energy(mesh, m_X0, m_settings.sliver_barrier_weight);
+    Points anchor;
+    if(m_settings.is_accurate())
+    {
+      anchor = m_X0;
+      Fidelity_anchor(mesh).apply(bound, anchor);
+      energy.add_fidelity(m_settings.fidelity_weight, [&bound](std::size_t i) { return bound.size(i); }, anchor);
+    }
+    m_result.initial_energy = m_result.final_energy = energy.value(m_X0);
+    m_result.initial_bending_energy = m_result.final_bending_energy = energy.bending_energy(m_X0);
+    m_result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
+    m_result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+    m_X = m_X0;
+    if(m_settings.options.max_iterations > 0)
+    {
+      start(mesh, bound, energy, anchor);
+      solve(mesh, bound, energy, callback);
+      if(!m_result)
+        return;
+      m_result.final_bending_energy = energy.bending_energy(m_X);
+    }
+    report(bound, np, part, is_region);
+  }
+  Hinge_mesh build_hinges(const Part& part, bool is_region) const
+  {
+    if(!is_region)
+      return Hinge_mesh(m_tmesh, m_vertex_index);
+    // A hinge counts when one of its four vertices moves.
+    return Hinge_mesh(m_tmesh, part.triangles(), part.size(), m_vertex_index, [&](const std::array<Index, 4>& v) {
+      return m_moving[v[0]] || m_moving[v[1]] || m_moving[v[2]] || m_moving[v[3]];
+    });
+  }
+
+  // The smoothed start (the accurate objective's anchor is one), kept only if it lowers the
+  // objective, so that the result never has a higher objective than the input.
+  template <typename Bound>
+  void start(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy, const Points& anchor)
+  {
+    if(m_settings.options.smoothing_steps == 0)
+      return;
+    if(m_settings.is_accurate())
+      m_X = anchor;
+    else
+      smooth_start(mesh, bound, m_settings.options.smoothing_steps, m_X);
+    if(!(energy.value(m_X) < m_result.initial_energy))
+      m_X = m_X0;
+  }
+
+  // The descent, then fold repair with the same solver.
+  template <typename Bound>
+  void solve(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy, const Iteration_callback& callback)
+  {
+    std::optional<Projected_lbfgs<Bound> > quasi_newton;
+    std::optional<Active_set_newton<Bound, SparseLinearSolver> > active_set;
+    if(m_settings.method == Constrained_fairing_method::QUASI_NEWTON)
+      quasi_newton.emplace(bound, energy);
+    else
+      active_set.emplace(mesh, bound, energy, m_solver);
+    const auto descend = [&](const Solver_options& options, const Iteration_callback& heard, Points& X) {
+      return quasi_newton ? quasi_newton->run(X, options, heard) : active_set->run(X, options, heard);
+    };
+    Solver_report path = descend(m_settings.options, callback, m_X);
+    if(path.status != Constrained_fairing_status::LINEAR_SOLVER_FAILED)
+    {
+      const Fold_count folds = repair_folds(mesh, bound, m_moving, descend, m_settings.options, callback, m_X, path);
+      m_result.number_of_folded_faces = folds.after;
+      m_result.number_of_unfolded_faces = folds.before > folds.after ? folds.before - folds.after : 0;
+      m_result.final_energy = path.final_energy;
+    }
+    m_result.status = path.status;
+    m_result.message = path.message;
+    m_result.number_of_iterations = path.iterations;
+    m_result.number_of_cg_iterations = path.cg_iterations;
+    m_result.number_of_energy_evaluations = path.energy_evaluations;
+  }
+
+  // The result's counts and the output maps, 0 and false for the vertices outside the part.
+  template <typename Bound, typename NamedParameters>
+  void report(const Bound& bound, const NamedParameters& np, const Part& part, bool is_region)
+  {
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+    const std::size_t n = part.size();
+    m_result.max_deviation = bound.max_deviation(m_X);
+    typename Bound::Face face;
+    const auto is_at_bound = [&](std::size_t i) {
+      return m_moving[i] && bound.size(i) > 0 && bound.is_on_boundary(m_X, i, face);
+    };
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      m_result.number_of_vertices_at_bound += is_at_bound(i);
+      m_result.number_of_fixed_vertices += !m_moving[i] || !(bound.size(i) > 0);
+    }
+    if constexpr(!is_default_parameter<NamedParameters, vertex_deviation_map_t>::value)
+    {
+      const auto deviation_map = get_parameter(np, vertex_deviation_map);
+      if(is_region)
+        for(auto v : vertices(m_tmesh))
+          put(deviation_map, v, 0);
+      part.for_each_vertex([&](std::size_t, vertex_descriptor v) {
+        put(deviation_map, v, bound.deviation(m_X, get(m_vertex_index, v)));
+      });
+    }
+    if constexpr(!is_default_parameter<NamedParameters, vertex_at_bound_map_t>::value)
+    {
+      const auto at_bound_map = get_parameter(np, vertex_at_bound_map);
+      if(is_region)
+        for(auto v : vertices(m_tmesh))
+          put(at_bound_map, v, false);
+      part.for_each_vertex(
+        [&](std::size_t, vertex_descriptor v) { put(at_bound_map, v, is_at_bound(get(m_vertex_index, v))); });
+    }
+  }
+
+  // Only moved vertices are written: the others keep their coordinates exactly, even in an
+  // exact kernel.
+  void write_back(const Part& part)
+  {
+    part.for_each_vertex([&](std::size_t, vertex_descriptor v) {
+      const std::size_t i = get(m_vertex_index, v);
+      if(point(m_X, i) != point(m_X0, i))
+        put(m_vpm, v, Point_3(m_X(i, 0), m_X(i, 1), m_X(i, 2)));
+    });
+  }
+
+  TriangleMesh& m_tmesh;
+  VertexPointMap m_vpm;
+  const Fairing_settings& m_settings;
+  const SparseLinearSolver& m_solver;
+  Constrained_fairing_result m_result;
+  // Each vertex's place in the solver's order, from the order phase on.
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type
+    m_vertex_index;
+  std::vector<bool> m_moving; // in the solver's order
+  Points m_X0, m_X; // the input points (in the part's order while checking) and the current points
+};
+
+
+// One call on the faces of `region` (all of them if it is null) with `settings`, read from `np`
+// or given by a front end; `np` gives the point map, the per-vertex maps, the callback and the
+// linear solver.
+template <typename TriangleMesh, typename FaceRange, typename NamedParameters>
+Constrained_fairing_result run_fairing_driver(const FaceRange* region, TriangleMesh& tmesh, double epsilon,
+                                              const Fairing_settings& settings, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Sparse_linear_solver =
+    typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t, NamedParameters,
+                                                 Default_sparse_linear_solver>::type;
+  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, tmesh));
+  const auto solver = choose_parameter<Sparse_linear_solver>(get_parameter(np, internal_np::sparse_linear_solver));
+  Fairing_driver<TriangleMesh, std::remove_const_t<decltype(vpm)>, Sparse_linear_solver> driver(tmesh, vpm, settings,
+                                                                                                 solver);
+  return driver.run(region, epsilon, np, choose_parameter(get_parameter(np, iteration_callback), Always_continue()));
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DRIVER_H

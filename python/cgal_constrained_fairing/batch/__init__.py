@@ -1,0 +1,145 @@
+"""Fair batches of mesh files on a Dask ``distributed`` cluster.
+
+`fair_files` fairs each file in a task of its own, writes each result into an output folder
+under the input's file name (same format), and keeps a table of what was done in
+``OUT_DIR/report.csv``. A file that cannot be read or is rejected gets its error in the table
+and the batch goes on; a second run skips the files already done and retries the others.
+
+On this machine, one worker process per core::
+
+    python3 -m cgal_constrained_fairing.batch scans/*.ply -o faired/ --eps 0.25h
+
+On several machines, start a Dask scheduler on one of them (it listens on port 8786)::
+
+    dask-scheduler
+
+then a worker on each machine that should compute, with the package installed there, ``K``
+being the number of files it fairs at once (its cores, or fewer when memory is short)::
+
+    dask-worker tcp://HOST:8786 --nthreads K
+
+and send the batch to the scheduler::
+
+    python3 -m cgal_constrained_fairing.batch scans/*.ply -o faired/ --scheduler tcp://HOST:8786
+
+The workers read the inputs and write the outputs themselves, so the input and output paths
+must name the same files on every machine (a shared file system). Relative paths are made
+absolute on the machine that sends the batch. From Python, pass ``distributed.Client(
+"tcp://HOST:8786")`` as `fair_files`'s `client`.
+"""
+
+import operator
+import os
+from typing import TYPE_CHECKING, Any, List, Optional, Sequence
+
+from ._command_line import main
+from ._epsilon import DEFAULT_EPS, Eps
+from ._progress import show_progress
+from ._report_file import COLUMNS, REPORT_NAME, Row
+from ._schedule import Batch, available_cores
+
+if TYPE_CHECKING:
+    import distributed
+
+__all__ = ["COLUMNS", "REPORT_NAME", "fair_files", "main"]
+
+
+def fair_files(paths: Sequence["os.PathLike[str] | str"],
+               out_dir: "os.PathLike[str] | str",
+               client: Optional["distributed.Client"] = None, *,
+               eps: Eps = DEFAULT_EPS,
+               workers: Optional[int] = None,
+               threads: Optional[int] = None,
+               force: bool = False,
+               progress: Optional[bool] = None,
+               **fair_options: Any) -> List[Row]:
+    """Fair mesh files on a Dask cluster, one task per file, and report what was done.
+
+    Each file is read with `read_mesh`, faired with `fair` and written to
+    ``out_dir / <its file name>`` (same format) through a temporary file, so that an output
+    file is always complete. The report ``out_dir/report.csv`` is rewritten after each file,
+    so that an interrupted batch leaves the table of what it did. Files whose output exists
+    are skipped, whatever options made it: running the same batch again finishes it, and
+    `force` redoes everything.
+
+    Parameters
+    ----------
+    paths : sequence of str or os.PathLike
+        The mesh files (OFF, OBJ, PLY or STL, by extension); their file names must differ.
+        Relative paths are taken from the current directory.
+    out_dir : str or os.PathLike
+        The output folder, created if missing; it must not hold an input (outputs would
+        overwrite inputs).
+    client : distributed.Client, optional
+        The client of the cluster to run on. Default: a `distributed.LocalCluster` of
+        `workers` processes of one thread each, started for the batch (only if a file is left
+        to fair) and closed at its end.
+    eps : str or float
+        The tolerance of each file: ``"<x>h"`` for x times its `mean_edge_length`,
+        ``"auto"`` for its `estimate_noise_level`, or a number (or numeric string) in the
+        meshes' units; the command-line tool's ``--eps`` reads the same texts (default
+        ``"0.25h"``).
+    workers : int, optional
+        The worker processes of the local cluster: default, and at most, one per core (and
+        no more than files to fair). Only without `client`.
+    threads : int, optional
+        The threads of the library's parallel loops (TBB) in each worker process. Default:
+        on the local cluster, the cores divided among its workers; on a `client`'s cluster,
+        no limit (a ``dask-worker`` process per machine, whose tasks share its cores).
+    force : bool
+        Fair every file, even those whose output exists.
+    progress : bool, optional
+        Show a progress bar (tqdm) on stderr. Default: when stderr is a terminal and tqdm
+        is installed.
+    **fair_options
+        Passed to `fair` unchanged for every file, e.g. ``objective="accurate"``
+        (`progress` is the batch's own; `fair`'s progress is not available here).
+
+    Returns
+    -------
+    list of dict
+        The report's rows, one per input in input order, keyed by `COLUMNS`; missing values
+        are ``None``. ``path`` and ``output`` are absolute paths; ``status`` is the lower-case
+        `Status` of the run (``"converged"``, ``"iteration_limit_reached"``,
+        ``"cancelled"``), ``"error"`` (``error`` says why: ``"DEFECT: message"`` for an
+        `InputError`, ``"TypeName: message"`` otherwise) or ``"skipped"``; a skipped file
+        whose row the previous report holds keeps that row (but a previous error is not kept:
+        the file's output exists, so it shows as ``"skipped"``). ``seconds`` is the wall time
+        of the file's task (read, fair, write) and ``worker`` the address of its worker.
+
+    Raises
+    ------
+    ValueError
+        Before anything is started or written: two inputs with the same file name, an output
+        that would overwrite its input, a bad `eps` or `workers`, or `workers` with `client`.
+    TypeError
+        An option that `fair` does not take.
+    ImportError
+        Dask's ``distributed`` is not installed.
+
+    Examples
+    --------
+    >>> from cgal_constrained_fairing import fair_files
+    >>> rows = fair_files(["a.off", "b.ply"], "faired", eps="auto")      # doctest: +SKIP
+    >>> [row["status"] for row in rows]                                 # doctest: +SKIP
+    ['converged', 'converged']
+    """
+    batch = Batch(paths, out_dir, eps, force, fair_options)
+    if client is not None and workers is not None:
+        raise ValueError("workers applies to the local cluster only; not with a client")
+    cores = available_cores()
+    if workers is not None:
+        workers = _positive_int(workers, "workers")
+    if threads is not None:
+        threads = _positive_int(threads, "threads")
+    return batch.run(client, workers, threads, cores, show_progress(progress))
+
+
+def _positive_int(value, name: str) -> int:
+    try:
+        number = operator.index(value)  # numpy integers too, but not 2.0
+    except TypeError:
+        number = 0
+    if isinstance(value, bool) or number < 1:
+        raise ValueError(f"{name} must be a positive integer (got {value!r})")
+    return number

@@ -1,0 +1,216 @@
+"""The batch's tasks: which files to fair, and their tasks on a local or a given Dask cluster."""
+
+import inspect
+import os
+import time
+import uuid
+from pathlib import Path
+from typing import Any, Dict, List, Optional, Tuple
+
+from .._errors import InputError
+from .._fairing import fair, set_max_threads
+from .._io import read_mesh, write_mesh
+from ._epsilon import mesh_epsilon, parse_eps
+from ._progress import Bar
+from ._report_file import REPORT_NAME, Row, empty_row, read_report, write_report
+
+
+class Batch:
+    """A checked batch: its inputs, outputs, options and the rows known before it runs."""
+
+    def __init__(self, paths, out_dir, eps, force, fair_options):
+        if isinstance(paths, (str, bytes, os.PathLike)):
+            raise TypeError("paths must be a sequence of paths, not a single path")
+        self.inputs = [Path(os.path.abspath(os.fspath(p))) for p in paths]
+        self.out_dir = Path(os.path.abspath(os.fspath(out_dir)))
+        self.eps = parse_eps(eps)
+        self.force = bool(force)
+        self.fair_options = _check_fair_options(fair_options)
+        self.outputs = [self.out_dir / p.name for p in self.inputs]
+        self.report_path = self.out_dir / REPORT_NAME
+        self._check_names()
+        self.rows: List[Optional[Row]] = [None] * len(self.inputs)
+        self.skipped: List[int] = []
+        self.todo: List[int] = []
+
+    def _check_names(self):
+        seen = {}
+        for path, output in zip(self.inputs, self.outputs):
+            if path.name in seen:
+                raise ValueError(f"two inputs have the file name {path.name!r} ({seen[path.name]} "
+                                 f"and {path}): their outputs would be the same file")
+            seen[path.name] = path
+            if path.name == REPORT_NAME:
+                raise ValueError(f"{path}: an input named {REPORT_NAME} would overwrite the "
+                                 "report")
+            if _same_file(path, output):
+                raise ValueError(f"{path}: the output would overwrite the input; "
+                                 "choose another output folder")
+
+    def plan(self):
+        """Sort the inputs into those to fair and those done, whose rows are then known."""
+        previous = read_report(self.report_path)
+        for index, (path, output) in enumerate(zip(self.inputs, self.outputs)):
+            if self.force or not output.exists():
+                self.todo.append(index)
+                continue
+            self.skipped.append(index)
+            row = previous.get(str(path))
+            if row is None or row["status"] == "error":
+                row = empty_row(path)
+                row.update(status="skipped", output=str(output))
+            self.rows[index] = row
+
+    def run(self, client, workers, threads, cores, show_progress) -> List[Row]:
+        import_distributed()  # before anything is written
+        os.makedirs(self.out_dir, exist_ok=True)
+        self.plan()
+        if self.todo:
+            if client is not None:
+                # dask-worker starts one process per machine by default: its tasks share
+                # TBB's pool, so the library is not limited.
+                self._run_on(client, threads=threads or 0, show_progress=show_progress)
+            else:
+                self._run_locally(workers, threads, cores, show_progress)
+        write_report(self.report_path, self.rows)
+        return list(self.rows)
+
+    def _run_locally(self, workers, threads, cores, show_progress):
+        distributed = import_distributed()
+        workers = min(workers or cores, cores, len(self.todo))
+        cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
+                                           processes=True, dashboard_address=None)
+        try:
+            # Not the default client: the caller's own stays the default.
+            with distributed.Client(cluster, set_as_default=False) as client:
+                # The processes share the cores, so TBB gets each its share.
+                self._run_on(client, threads=threads or max(1, cores // workers),
+                             show_progress=show_progress)
+        finally:
+            cluster.close()
+
+    def _run_on(self, client, threads, show_progress):
+        distributed = import_distributed()
+        token = uuid.uuid4().hex[:8]
+        futures = {}
+        # The largest files first, so that the last tasks are short and no worker idles long
+        # while another finishes.
+        for index in sorted(self.todo, key=lambda i: -_size(self.inputs[i])):
+            key = f"fair_file-{self.inputs[index].name}-{token}-{index}"
+            future = client.submit(_fair_file, str(self.inputs[index]), str(self.outputs[index]),
+                                   self.eps, self.fair_options, threads, key=key, pure=False)
+            futures[future] = index
+        bar = Bar(len(self.inputs), len(self.skipped)) if show_progress else None
+        try:
+            # The loop given: the batch's own client is not the default one.
+            for future in distributed.as_completed(list(futures), loop=client.loop):
+                index = futures[future]
+                try:
+                    row = future.result()
+                except Exception as error:  # the task itself catches; this is a lost worker
+                    row = empty_row(self.inputs[index])
+                    row.update(status="error", error=_describe(error))
+                self.rows[index] = row
+                # Rewritten after each file, so an interrupted batch leaves what it did.
+                write_report(self.report_path, self.rows)
+                if bar is not None:
+                    bar.update(row)
+        except BaseException:
+            client.cancel(list(futures))
+            raise
+        finally:
+            if bar is not None:
+                bar.close()
+
+
+def available_cores() -> int:
+    """The cores this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def import_distributed():
+    """Dask's ``distributed``, or an ImportError that says how to install it."""
+    try:
+        import distributed
+    except ImportError as error:
+        raise ImportError("cgal_constrained_fairing.batch needs Dask's distributed: "
+                          "pip install distributed") from error
+    return distributed
+
+
+def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dict[str, Any],
+               threads: int) -> Row:
+    """The task of one file, run in a worker: read, fair, write; never raises."""
+    start = time.perf_counter()
+    row = empty_row(path)
+    row["worker"] = _worker_address()
+    partial = None
+    try:
+        set_max_threads(threads)
+        V, F = read_mesh(path)
+        row.update(vertices=int(V.shape[0]), faces=int(F.shape[0]))
+        epsilon = mesh_epsilon(eps, V, F)
+        row["epsilon"] = epsilon
+        W, report = fair(V, F, epsilon, **fair_options)
+        # The temporary keeps the extension: the writer is chosen by it.
+        stem, ext = os.path.splitext(os.path.basename(output))
+        partial = os.path.join(os.path.dirname(output), f".{stem}.partial{ext}")
+        write_mesh(partial, W, F)
+        os.replace(partial, output)
+        partial = None
+        row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
+                   initial_bending_energy=report.initial_bending_energy,
+                   final_bending_energy=report.final_bending_energy,
+                   initial_energy=report.initial_energy, final_energy=report.final_energy,
+                   max_deviation=report.max_deviation, output=output)
+    except Exception as error:
+        row.update(status="error", error=_describe(error))
+    finally:
+        if partial is not None:
+            try:
+                os.remove(partial)
+            except OSError:
+                pass
+    row["seconds"] = time.perf_counter() - start
+    return row
+
+
+def _describe(error: BaseException) -> str:
+    if isinstance(error, InputError):
+        return f"{error.defect.value}: {error.message}"
+    return f"{type(error).__name__}: {error}"
+
+
+def _worker_address() -> Optional[str]:
+    try:
+        from distributed import get_worker
+        return get_worker().address
+    except (ImportError, ValueError):  # not in a worker
+        return None
+
+
+def _check_fair_options(options: Dict[str, Any]) -> Dict[str, Any]:
+    taken = {name for name, parameter in inspect.signature(fair).parameters.items()
+             if parameter.kind is inspect.Parameter.KEYWORD_ONLY and name != "progress"}
+    for name in options:
+        if name not in taken:
+            raise TypeError(f"fair_files() got an option that fair() does not take in a batch: "
+                            f"{name!r}")
+    return dict(options)
+
+
+def _size(path: Path) -> int:
+    try:
+        return path.stat().st_size
+    except OSError:  # missing: its task reports it
+        return 0
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    try:
+        return os.path.samefile(a, b)
+    except OSError:  # one is missing: compare the names they resolve to
+        return os.path.realpath(a) == os.path.realpath(b)
