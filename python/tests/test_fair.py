@@ -2,6 +2,7 @@
 threads, Ctrl-C, and identity with the C++ programs on the same meshes."""
 
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -14,7 +15,7 @@ import pytest
 
 import cgal_constrained_fairing as cf
 from cgal_constrained_fairing import _core
-from conftest import BAD_INPUT, DATA, icosphere, noisy
+from conftest import BAD_INPUT, DATA, ROOT, icosphere, noisy
 
 
 @pytest.fixture(scope="module")
@@ -231,8 +232,14 @@ def test_the_report_has_every_field_of_the_cpp_result(sphere):
 
 
 def test_defects_are_those_of_the_library():
-    names = set(_core.Defect.__members__)
-    assert names == {d.name for d in cf.Defect} - {"INVALID_ARGUMENT"}
+    # The C++ enum, in its order, as the module binds it and as Python names it.
+    header = (ROOT / "include/CGAL/Polygon_mesh_processing/Constrained_fairing_result.h").read_text()
+    body = re.search(r"enum class Constrained_fairing_defect\s*\{(.*?)\};", header, re.S).group(1)
+    cpp = re.findall(r"^\s*([A-Z_]+),?\s*$", body, re.M)
+    assert cpp[0] == "NONE" and len(cpp) > 10
+    assert [name for name, value in sorted(_core.Defect.__members__.items(),
+                                          key=lambda item: int(item[1]))] == cpp
+    assert [d.name for d in cf.Defect if d.name != "INVALID_ARGUMENT"] == cpp
 
 
 @pytest.mark.parametrize("vertices,faces,what", [

@@ -117,25 +117,26 @@ public:
   }
 
 private:
+  // Whether the user gave the named parameter of tag `Tag`.
+  template <typename NamedParameters, typename Tag>
+  static constexpr bool given()
+  {
+    return !parameters::is_default_parameter<NamedParameters, Tag>::value;
+  }
   template <typename NamedParameters>
   static constexpr bool has_tolerance_map()
   {
-    return !parameters::is_default_parameter<NamedParameters, vertex_tolerance_map_t>::value;
-  }
-  template <typename NamedParameters>
-  static constexpr bool has_extents()
-  {
-    return !parameters::is_default_parameter<NamedParameters, box_half_extents_t>::value;
+    return given<NamedParameters, vertex_tolerance_map_t>();
   }
   template <typename NamedParameters>
   static constexpr bool has_extents_map()
   {
-    return !parameters::is_default_parameter<NamedParameters, vertex_box_half_extents_map_t>::value;
+    return given<NamedParameters, vertex_box_half_extents_map_t>();
   }
   template <typename NamedParameters>
   static constexpr bool has_centre_map()
   {
-    return !parameters::is_default_parameter<NamedParameters, vertex_box_center_map_t>::value;
+    return given<NamedParameters, vertex_box_center_map_t>();
   }
 
   // What the named parameters give a vertex that may move, as given (NaN and all).
@@ -169,16 +170,16 @@ private:
   Input_error read_shape(double epsilon, const NamedParameters& np)
   {
     using parameters::get_parameter;
-    constexpr bool box_parameters =
-      has_extents<NamedParameters>() || has_extents_map<NamedParameters>() || has_centre_map<NamedParameters>();
+    constexpr bool box_parameters = given<NamedParameters, box_half_extents_t>() ||
+                                    has_extents_map<NamedParameters>() || has_centre_map<NamedParameters>();
     const bool box_asked =
       parameters::choose_parameter(get_parameter(np, deviation_bound), Deviation_bound::BALL) == Deviation_bound::BOX;
-    if(box_parameters && !box_asked && !parameters::is_default_parameter<NamedParameters, deviation_bound_t>::value)
+    if(box_parameters && !box_asked && given<NamedParameters, deviation_bound_t>())
       return box_with_ball_error();
     m_box = box_asked || box_parameters;
     m_epsilon = epsilon;
     m_uniform_extents = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    if constexpr(has_extents<NamedParameters>())
+    if constexpr(given<NamedParameters, box_half_extents_t>())
     {
       const std::array<double, 3> h = get_parameter(np, box_half_extents);
       m_uniform_extents = Eigen::Vector3d(h[0], h[1], h[2]);
@@ -196,8 +197,13 @@ private:
     part.for_each_vertex([&](std::size_t k, auto v) {
       if(part.is_fixed(k))
         return;
-      Vertex_values values{m_epsilon, m_uniform_extents, Eigen::Vector3d::Zero(), has_tolerance_map<NamedParameters>(),
-                           has_extents_map<NamedParameters>(), has_centre_map<NamedParameters>(), m_epsilon};
+      Vertex_values values{m_epsilon,
+                           m_uniform_extents,
+                           Eigen::Vector3d::Zero(),
+                           has_tolerance_map<NamedParameters>(),
+                           has_extents_map<NamedParameters>(),
+                           has_centre_map<NamedParameters>(),
+                           m_epsilon};
       if constexpr(has_tolerance_map<NamedParameters>())
       {
         values.given_tolerance = CGAL::to_double(get(get_parameter(np, vertex_tolerance_map), v));

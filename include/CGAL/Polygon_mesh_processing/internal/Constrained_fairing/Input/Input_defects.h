@@ -20,19 +20,24 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
+using Defect = Constrained_fairing_defect;
+
 // A defect and its message; converts to true when there is one.
 struct Input_error
 {
-  Constrained_fairing_defect defect = Constrained_fairing_defect::NONE;
+  Defect defect = Defect::NONE;
   std::string message;
 
-  explicit operator bool() const { return defect != Constrained_fairing_defect::NONE; }
+  explicit operator bool() const { return defect != Defect::NONE; }
 };
 
 namespace defect_message {
 
 inline std::string vertex(std::size_t v) { return "vertex " + std::to_string(v); }
-inline std::string faces(std::size_t f, std::size_t g) { return "faces " + std::to_string(f) + " and " + std::to_string(g); }
+inline std::string faces(std::size_t f, std::size_t g)
+{
+  return "faces " + std::to_string(f) + " and " + std::to_string(g);
+}
 inline std::string vertices(std::size_t a, std::size_t b)
 {
   return "vertices " + std::to_string(a) + " and " + std::to_string(b);
@@ -40,123 +45,127 @@ inline std::string vertices(std::size_t a, std::size_t b)
 
 } // namespace defect_message
 
-inline Input_error empty_mesh_error() { return {Constrained_fairing_defect::EMPTY_MESH, "the mesh is empty"}; }
+inline Input_error empty_mesh_error() { return {Defect::EMPTY_MESH, "the mesh is empty"}; }
 
-inline Input_error no_faces_error() { return {Constrained_fairing_defect::NO_FACES, "the mesh has no faces"}; }
+inline Input_error no_faces_error() { return {Defect::NO_FACES, "the mesh has no faces"}; }
 
 inline Input_error broken_structure_error()
 {
-  return {Constrained_fairing_defect::BROKEN_STRUCTURE,
+  return {Defect::BROKEN_STRUCTURE,
           "the mesh's halfedge structure is broken (its next, prev, opposite, target and face links disagree)"};
 }
 
 // A face of a soup with fewer than three corners.
 inline Input_error too_few_corners_error(std::size_t f, std::size_t corners)
 {
-  return {Constrained_fairing_defect::INVALID_FACE, "face " + std::to_string(f) + " has " + std::to_string(corners) + " vertices"};
+  return {Defect::INVALID_FACE, "face " + std::to_string(f) + " has " + std::to_string(corners) + " vertices"};
 }
 
 // A face of a soup that names vertex `v` (as the user gave it, possibly negative) of `n`.
 template <typename Integer>
 Input_error missing_vertex_error(std::size_t f, Integer v, std::size_t n)
 {
-  return {Constrained_fairing_defect::INVALID_FACE, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", but there are " +
-                             std::to_string(n) + " vertices"};
+  return {Defect::INVALID_FACE, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                                  ", but there are " + std::to_string(n) + " vertices"};
 }
 
 inline Input_error repeated_vertex_error(std::size_t f, std::size_t v)
 {
-  return {Constrained_fairing_defect::INVALID_FACE, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " twice"};
+  return {Defect::INVALID_FACE, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " twice"};
 }
 
 inline Input_error not_triangle_error(std::size_t f, std::size_t corners)
 {
-  return {Constrained_fairing_defect::NOT_TRIANGLE, "face " + std::to_string(f) + " has " + std::to_string(corners) +
+  return {Defect::NOT_TRIANGLE, "face " + std::to_string(f) + " has " + std::to_string(corners) +
                              " vertices: the mesh must be made of triangles"};
 }
 
 // More than two faces on the edge between vertices a and b.
 inline Input_error crowded_edge_error(std::size_t a, std::size_t b, std::size_t number_of_faces)
 {
-  return {Constrained_fairing_defect::NON_MANIFOLD_EDGE, "the edge between " + defect_message::vertices(a, b) + " has " +
+  return {Defect::NON_MANIFOLD_EDGE, "the edge between " + defect_message::vertices(a, b) + " has " +
                                   std::to_string(number_of_faces) + " faces (a non-manifold edge)"};
 }
 
 // Two faces that share vertices a and b through two different edges of a halfedge mesh.
 inline Input_error split_edge_error(std::size_t f, std::size_t g, std::size_t a, std::size_t b)
 {
-  return {Constrained_fairing_defect::NON_MANIFOLD_EDGE, defect_message::faces(f, g) + " share " + defect_message::vertices(a, b) +
+  return {Defect::NON_MANIFOLD_EDGE, defect_message::faces(f, g) + " share " + defect_message::vertices(a, b) +
                                   " through two different edges (a non-manifold edge)"};
 }
 
 // Faces f and g both run from vertex `from` to vertex `to`.
 inline Input_error inconsistent_orientation_error(std::size_t f, std::size_t g, std::size_t from, std::size_t to)
 {
-  return {Constrained_fairing_defect::INCONSISTENT_ORIENTATION, defect_message::faces(f, g) + " are oriented inconsistently: both run from " +
-                                         defect_message::vertex(from) + " to " + defect_message::vertex(to)};
+  return {Defect::INCONSISTENT_ORIENTATION, defect_message::faces(f, g) +
+                                              " are oriented inconsistently: both run from " +
+                                              defect_message::vertex(from) + " to " + defect_message::vertex(to)};
 }
 
 inline Input_error non_manifold_vertex_error(std::size_t v)
 {
-  return {Constrained_fairing_defect::NON_MANIFOLD_VERTEX, defect_message::vertex(v) + " is non-manifold: its faces form more than one fan"};
+  return {Defect::NON_MANIFOLD_VERTEX,
+          defect_message::vertex(v) + " is non-manifold: its faces form more than one fan"};
 }
 
 inline Input_error mesh_too_large_error(std::size_t max_vertices, std::size_t max_faces)
 {
-  return {Constrained_fairing_defect::MESH_TOO_LARGE, "the mesh is too large: at most " + std::to_string(max_vertices) + " vertices and " +
+  return {Defect::MESH_TOO_LARGE, "the mesh is too large: at most " + std::to_string(max_vertices) + " vertices and " +
                                std::to_string(max_faces) + " faces"};
 }
 
 inline Input_error non_finite_coordinate_error(std::size_t v)
 {
-  return {Constrained_fairing_defect::NON_FINITE_COORDINATE, defect_message::vertex(v) + " has a NaN or infinite coordinate"};
+  return {Defect::NON_FINITE_COORDINATE, defect_message::vertex(v) + " has a NaN or infinite coordinate"};
 }
 
 inline Input_error invalid_epsilon_error(double epsilon)
 {
-  return {Constrained_fairing_defect::INVALID_EPSILON, "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")"};
+  return {Defect::INVALID_EPSILON, "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")"};
 }
 
 inline Input_error invalid_fidelity_weight_error(double mu)
 {
-  return {Constrained_fairing_defect::INVALID_FIDELITY_WEIGHT, "fidelity_weight must be finite and non-negative (" + std::to_string(mu) + ")"};
+  return {Defect::INVALID_FIDELITY_WEIGHT,
+          "fidelity_weight must be finite and non-negative (" + std::to_string(mu) + ")"};
 }
 
 inline Input_error invalid_sliver_barrier_weight_error(double nu)
 {
-  return {Constrained_fairing_defect::INVALID_SLIVER_BARRIER_WEIGHT,
+  return {Defect::INVALID_SLIVER_BARRIER_WEIGHT,
           "sliver_barrier_weight must be finite and non-negative (" + std::to_string(nu) + ")"};
 }
 
 inline Input_error box_with_ball_error()
 {
-  return {Constrained_fairing_defect::BOX_WITH_BALL, "box half-extents or centres were given with the ball bound"};
+  return {Defect::BOX_WITH_BALL, "box half-extents or centres were given with the ball bound"};
 }
 
 // `whose`: "box_half_extents" for the uniform ones, "the box half-extents of vertex v" otherwise.
 inline Input_error invalid_box_extents_error(const std::string& whose, double hx, double hy, double hz)
 {
-  return {Constrained_fairing_defect::INVALID_BOX_EXTENTS, whose + " must be finite and non-negative (" + std::to_string(hx) + ", " +
+  return {Defect::INVALID_BOX_EXTENTS, whose + " must be finite and non-negative (" + std::to_string(hx) + ", " +
                                     std::to_string(hy) + ", " + std::to_string(hz) + ")"};
 }
 
 inline Input_error invalid_tolerance_error(std::size_t v, double tolerance)
 {
-  return {Constrained_fairing_defect::INVALID_TOLERANCE,
+  return {Defect::INVALID_TOLERANCE,
           defect_message::vertex(v) + " has a negative, NaN or infinite tolerance (" + std::to_string(tolerance) + ")"};
 }
 
 inline Input_error invalid_box_center_error(std::size_t v)
 {
-  return {Constrained_fairing_defect::INVALID_BOX_CENTER, "the box centre of " + defect_message::vertex(v) + " has a NaN or infinite coordinate"};
+  return {Defect::INVALID_BOX_CENTER,
+          "the box centre of " + defect_message::vertex(v) + " has a NaN or infinite coordinate"};
 }
 
 inline Input_error outside_box_error(std::size_t v)
 {
-  return {Constrained_fairing_defect::OUTSIDE_BOX, defect_message::vertex(v) + " lies outside its box"};
+  return {Defect::OUTSIDE_BOX, defect_message::vertex(v) + " lies outside its box"};
 }
 
-inline Input_error no_area_error() { return {Constrained_fairing_defect::NO_AREA, "all triangles of the mesh have zero area"}; }
+inline Input_error no_area_error() { return {Defect::NO_AREA, "all triangles of the mesh have zero area"}; }
 
 } // namespace Constrained_fairing
 } // namespace internal
