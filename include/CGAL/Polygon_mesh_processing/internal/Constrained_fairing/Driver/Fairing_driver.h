@@ -9,8 +9,8 @@
 //    (Hilbert_order.h), the one numbering of everything that follows; the bounds are read
 //    straight into it;
 //  - build: the hinges, the objective (bending energy, barrier against slivers, fidelity);
-//  - start, solve, repair folds: a descent from a smoothed start, then re-seeded descents
-//    around the folds it left (Fold_repair.h), with one solver;
+//  - descend (Fairing_descent.h): from a smoothed start, then re-seeded descents around the
+//    folds it left (Fold_repair.h), with one solver;
 //  - report and write back: the result, the output maps, and the points that moved.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DRIVER_H
@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Bound_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_descent.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_part.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
@@ -29,13 +30,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_anchor.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Active_set_newton.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_lbfgs.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Smoothed_start.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>
@@ -208,21 +203,12 @@ private:
       Fidelity_anchor(mesh).apply(bound, anchor);
       energy.add_fidelity(m_settings.fidelity_weight, [&bound](std::size_t i) { return bound.size(i); }, anchor);
     }
-    m_result.initial_energy = m_result.final_energy = energy.value(m_X0);
-    m_result.initial_bending_energy = m_result.final_bending_energy = energy.bending_energy(m_X0);
-    m_result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
-    m_result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
-    m_X = m_X0;
-    if(m_settings.options.max_iterations > 0)
-    {
-      start(mesh, bound, energy, anchor);
-      solve(mesh, bound, energy, callback);
-      if(!m_result)
-        return;
-      m_result.final_bending_energy = energy.bending_energy(m_X);
-    }
-    report(bound, np, part, is_region);
+    Fairing_descent<Bound, SparseLinearSolver>(mesh, bound, m_moving, m_settings, m_solver)
+      .run(m_X0, energy, anchor, callback, m_X, m_result);
+    if(m_result)
+      report(bound, np, part, is_region);
   }
+
   Hinge_mesh build_hinges(const Part& part, bool is_region) const
   {
     if(!is_region)
@@ -231,49 +217,6 @@ private:
     return Hinge_mesh(m_tmesh, part.triangles(), part.size(), m_vertex_index, [&](const std::array<Index, 4>& v) {
       return m_moving[v[0]] || m_moving[v[1]] || m_moving[v[2]] || m_moving[v[3]];
     });
-  }
-
-  // The smoothed start (the accurate objective's anchor is one), kept only if it lowers the
-  // objective, so that the result never has a higher objective than the input.
-  template <typename Bound>
-  void start(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy, const Points& anchor)
-  {
-    if(m_settings.options.smoothing_steps == 0)
-      return;
-    if(m_settings.is_accurate())
-      m_X = anchor;
-    else
-      smooth_start(mesh, bound, m_settings.options.smoothing_steps, m_X);
-    if(!(energy.value(m_X) < m_result.initial_energy))
-      m_X = m_X0;
-  }
-
-  // The descent, then fold repair with the same solver.
-  template <typename Bound>
-  void solve(const Hinge_mesh& mesh, const Bound& bound, Fairing_objective& energy, const Iteration_callback& callback)
-  {
-    std::optional<Projected_lbfgs<Bound> > quasi_newton;
-    std::optional<Active_set_newton<Bound, SparseLinearSolver> > active_set;
-    if(m_settings.method == Constrained_fairing_method::QUASI_NEWTON)
-      quasi_newton.emplace(bound, energy);
-    else
-      active_set.emplace(mesh, bound, energy, m_solver);
-    const auto descend = [&](const Solver_options& options, const Iteration_callback& heard, Points& X) {
-      return quasi_newton ? quasi_newton->run(X, options, heard) : active_set->run(X, options, heard);
-    };
-    Solver_report path = descend(m_settings.options, callback, m_X);
-    if(path.status != Constrained_fairing_status::LINEAR_SOLVER_FAILED)
-    {
-      const Fold_count folds = repair_folds(mesh, bound, m_moving, descend, m_settings.options, callback, m_X, path);
-      m_result.number_of_folded_faces = folds.after;
-      m_result.number_of_unfolded_faces = folds.before > folds.after ? folds.before - folds.after : 0;
-      m_result.final_energy = path.final_energy;
-    }
-    m_result.status = path.status;
-    m_result.message = path.message;
-    m_result.number_of_iterations = path.iterations;
-    m_result.number_of_cg_iterations = path.cg_iterations;
-    m_result.number_of_energy_evaluations = path.energy_evaluations;
   }
 
   // The result's counts and the output maps, 0 and false for the vertices outside the part.

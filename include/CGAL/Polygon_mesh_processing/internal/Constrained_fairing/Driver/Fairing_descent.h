@@ -1,0 +1,117 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The method once a driver has built the problem (the hinges, the bound, the objective): a
+// smoothed start, kept only if it lowers the objective, so that the result never has a higher
+// objective than the input; the descent by the method the settings name; then re-seeded
+// descents around the folds it left (Fold_repair.h), with the same solver. It fills the
+// result's energies, counts, status and message; the driver reports the rest and writes back.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DESCENT_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DESCENT_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Active_set_newton.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_lbfgs.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Smoothed_start.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
+
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+template <typename Bound, typename SparseLinearSolver>
+class Fairing_descent
+{
+public:
+  // `moving[i]`: whether vertex i may move (fold repair re-seeds only those).
+  Fairing_descent(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving,
+                  const Fairing_settings& settings, const SparseLinearSolver& solver)
+    : m_mesh(mesh), m_bound(bound), m_moving(moving), m_settings(settings), m_solver(solver)
+  {}
+
+  // From the input points X0 to X, minimizing `energy`, whose fidelity term (the accurate
+  // objective) pulls towards `anchor`.
+  void run(const Points& X0, Fairing_objective& energy, const Points& anchor, const Iteration_callback& callback,
+           Points& X, Constrained_fairing_result& result) const
+  {
+    result.initial_energy = result.final_energy = energy.value(X0);
+    result.initial_bending_energy = result.final_bending_energy = energy.bending_energy(X0);
+    result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
+    result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+    X = X0;
+    if(m_settings.options.max_iterations == 0)
+      return;
+    start(X0, energy, anchor, result.initial_energy, X);
+    solve(energy, callback, X, result);
+    if(result)
+      result.final_bending_energy = energy.bending_energy(X);
+  }
+
+private:
+  // The accurate objective's anchor is its smoothed start.
+  void start(const Points& X0, Fairing_objective& energy, const Points& anchor, double initial_energy,
+             Points& X) const
+  {
+    if(m_settings.options.smoothing_steps == 0)
+      return;
+    if(m_settings.is_accurate())
+      X = anchor;
+    else
+      smooth_start(m_mesh, m_bound, m_settings.options.smoothing_steps, X);
+    if(!(energy.value(X) < initial_energy))
+      X = X0;
+  }
+
+  void solve(Fairing_objective& energy, const Iteration_callback& callback, Points& X,
+             Constrained_fairing_result& result) const
+  {
+    std::optional<Projected_lbfgs<Bound> > quasi_newton;
+    std::optional<Active_set_newton<Bound, SparseLinearSolver> > active_set;
+    if(m_settings.method == Constrained_fairing_method::QUASI_NEWTON)
+      quasi_newton.emplace(m_bound, energy);
+    else
+      active_set.emplace(m_mesh, m_bound, energy, m_solver);
+    const auto descend = [&](const Solver_options& options, const Iteration_callback& heard, Points& Y) {
+      return quasi_newton ? quasi_newton->run(Y, options, heard) : active_set->run(Y, options, heard);
+    };
+    Solver_report path = descend(m_settings.options, callback, X);
+    if(path.status != Constrained_fairing_status::LINEAR_SOLVER_FAILED)
+    {
+      const Fold_count folds = repair_folds(m_mesh, m_bound, m_moving, descend, m_settings.options, callback, X, path);
+      result.number_of_folded_faces = folds.after;
+      result.number_of_unfolded_faces = folds.before > folds.after ? folds.before - folds.after : 0;
+      result.final_energy = path.final_energy;
+    }
+    result.status = path.status;
+    result.message = path.message;
+    result.number_of_iterations = path.iterations;
+    result.number_of_cg_iterations = path.cg_iterations;
+    result.number_of_energy_evaluations = path.energy_evaluations;
+  }
+
+  const Hinge_mesh& m_mesh;
+  const Bound& m_bound;
+  const std::vector<bool>& m_moving;
+  const Fairing_settings& m_settings;
+  const SparseLinearSolver& m_solver;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DESCENT_H
