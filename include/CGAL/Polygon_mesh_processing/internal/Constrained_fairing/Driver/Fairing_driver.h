@@ -23,6 +23,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_descent.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_part.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Value_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Mesh_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hilbert_order.h>
@@ -135,20 +136,7 @@ private:
       const Point_3& p = get(m_vpm, v);
       point(m_X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     });
-    for(std::size_t k = 0; k < part.size(); ++k)
-      if(!point(m_X0, k).allFinite())
-        return non_finite_coordinate_error(part.number(k));
-    if(!(std::isfinite(epsilon) && epsilon > 0))
-      return invalid_epsilon_error(epsilon);
-    if(!(std::isfinite(m_settings.fidelity_weight) && m_settings.fidelity_weight >= 0))
-      return invalid_fidelity_weight_error(m_settings.fidelity_weight);
-    if(!(std::isfinite(m_settings.sliver_barrier_weight) && m_settings.sliver_barrier_weight >= 0))
-      return invalid_sliver_barrier_weight_error(m_settings.sliver_barrier_weight);
-    if(Input_error error = Bound_parameters::check(part, m_X0, epsilon, np))
-      return error;
-    if(!Bending_energy::is_defined(part_triangles(part), m_X0))
-      return no_area_error();
-    return {};
+    return Constrained_fairing::value_error(part, m_X0, [&] { return part_triangles(part); }, epsilon, m_settings, np);
   }
 
   // The triangles of the part, its vertices numbered in the part's order.
@@ -225,17 +213,8 @@ private:
   {
     using parameters::get_parameter;
     using parameters::is_default_parameter;
-    const std::size_t n = part.size();
-    m_result.max_deviation = bound.max_deviation(m_X);
-    typename Bound::Face face;
-    const auto is_at_bound = [&](std::size_t i) {
-      return m_moving[i] && bound.size(i) > 0 && bound.is_on_boundary(m_X, i, face);
-    };
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      m_result.number_of_vertices_at_bound += is_at_bound(i);
-      m_result.number_of_fixed_vertices += !m_moving[i] || !(bound.size(i) > 0);
-    }
+    count_bound(bound, m_moving, m_X, m_result);
+    const auto is_at_bound = [&](std::size_t i) { return Constrained_fairing::is_at_bound(bound, m_moving, m_X, i); };
     if constexpr(!is_default_parameter<NamedParameters, vertex_deviation_map_t>::value)
     {
       const auto deviation_map = get_parameter(np, vertex_deviation_map);

@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The input contract's defects, each with the one function that makes its error and message:
-// every check names a defect through these, whether it checks a mesh (Mesh_check.h), the
-// values of a call (Fairing_driver.h, Bound_parameters.h) or a polygon soup before it becomes a
-// mesh (the front ends' soup check), so that a defect reads the same whichever path found it.
+// every check names a defect through these, whether it checks a mesh (Mesh_check.h), a
+// multi-label surface (Interface_check.h), the values of a call (Value_check.h,
+// Bound_parameters.h) or a polygon soup before it becomes a mesh (the front ends' soup check), so that a defect reads the same whichever path found it.
 // Vertices and faces are named by their position, from 0, in the user's order.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_DEFECTS_H
@@ -72,6 +72,12 @@ Input_error missing_vertex_error(std::size_t f, Integer v, std::size_t n)
 inline Input_error repeated_vertex_error(std::size_t f, std::size_t v)
 {
   return {Defect::INVALID_FACE, "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " twice"};
+}
+
+// A triangle of a multi-label surface with the same label on both sides.
+inline Input_error same_labels_error(std::size_t f)
+{
+  return {Defect::INVALID_FACE, "face " + std::to_string(f) + " has the same label on both sides"};
 }
 
 inline Input_error not_triangle_error(std::size_t f, std::size_t corners)

@@ -47,6 +47,52 @@ struct Hinge_mesh
   // The largest mesh the 32-bit indices hold (Bending_energy numbers face corners 3 f + k).
   static constexpr std::size_t max_faces = 0x55555555;
 
+  // Triangles given as index triples into [0, number_of_vertices), oriented, and the hinges
+  // between them as pairs {f, g} of positions in `triangle_list`, f running along the shared edge
+  // from a to b and g from b to a: the surface of a soup, whose hinges its caller chose.
+  Hinge_mesh(std::size_t number_of_vertices, const std::vector<std::array<Index, 3> >& triangle_list,
+             const std::vector<std::array<Index, 2> >& hinge_faces)
+    : number_of_vertices(number_of_vertices)
+  {
+    // Each triangle starts at its smallest vertex index, orientation kept.
+    std::vector<std::pair<std::array<Index, 3>, Index> > sorted;
+    sorted.reserve(triangle_list.size());
+    for(std::size_t f = 0; f < triangle_list.size(); ++f)
+    {
+      std::array<Index, 3> t = triangle_list[f];
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      sorted.emplace_back(t, static_cast<Index>(f));
+    }
+    sort_by_vertex(sorted, number_of_vertices, [](const auto& t) { return t.first[0]; },
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Index> position(sorted.size());
+    triangles.reserve(sorted.size());
+    for(const auto& t : sorted)
+    {
+      position[t.second] = static_cast<Index>(triangles.size());
+      triangles.push_back(t.first);
+    }
+    hinges.reserve(hinge_faces.size());
+    for(const auto& fg : hinge_faces)
+    {
+      const Index f = position[fg[0]], g = position[fg[1]];
+      // f's side that g runs the other way
+      const auto& t = triangles[f];
+      const auto& u = triangles[g];
+      for(int c = 0; c < 3; ++c)
+      {
+        const Index a = t[std::size_t(c)], b = t[std::size_t((c + 1) % 3)];
+        if(std::find(u.begin(), u.end(), a) != u.end() && std::find(u.begin(), u.end(), b) != u.end())
+        {
+          hinges.push_back(a < b ? Hinge{{a, b}, {f, g}} : Hinge{{b, a}, {g, f}});
+          break;
+        }
+      }
+    }
+    sort_by_vertex(hinges, number_of_vertices, [](const Hinge& x) { return x.v[0]; },
+                   [](const Hinge& x, const Hinge& y) { return x.v < y.v; });
+  }
+
   // `vertex_index` maps each vertex of the triangle mesh `tmesh` to [0, num_vertices(tmesh)),
   // which has fewer than 2^32 vertices and at most `max_faces` faces.
   template <typename TriangleMesh, typename VertexIndexMap>

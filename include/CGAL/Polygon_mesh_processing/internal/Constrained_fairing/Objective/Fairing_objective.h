@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
-// against slivers (Sliver_barrier.h), plus, for the accurate objective, a fidelity term that
+// against slivers (Sliver_barrier.h), plus, on a multi-label surface, the bending of its
+// junction lines (Junction_curves.h), plus, for the accurate objective, a fidelity term that
 // keeps the surface near an anchor a_i:
 //
 //   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
@@ -25,6 +26,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 
@@ -65,20 +67,31 @@ public:
     }
   }
 
+  // Adds the bending of the junction lines of a multi-label surface (kept by reference).
+  void add_junction_curves(const Junction_curves& curves) { m_curves = &curves; }
+
   std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
 
   double bending_energy(const Points& X) { return m_bending.value(X); }
 
-  double value(const Points& X) { return m_bending.value(X) + m_barrier.value(X) + fidelity(X); }
+  double value(const Points& X)
+  {
+    double sum = m_bending.value(X) + m_barrier.value(X);
+    if(m_curves)
+      sum += m_curves->value(X);
+    return sum + fidelity(X);
+  }
 
   // As Bending_energy::value_and_gradient(); the fidelity term adds 2 w_i (x_i - x0_i) to the
   // gradient and 2 w_i to the stiffness, in every direction.
   double value_and_gradient(const Points& X, Points& G, Stiffness_and_reach* scales = nullptr)
   {
-    const double bending = m_bending.value_and_gradient(X, G, scales);
-    const double barrier = m_barrier.add_gradient(X, G, scales);
+    double sum = m_bending.value_and_gradient(X, G, scales);
+    sum += m_barrier.add_gradient(X, G, scales);
+    if(m_curves)
+      sum += m_curves->add_gradient(X, G, scales);
     if(m_weight.empty())
-      return bending + barrier;
+      return sum;
     parallel_for_blocks(m_weight.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t i = begin; i < end; ++i)
       {
@@ -88,7 +101,7 @@ public:
           scales->stiffness[static_cast<Eigen::Index>(i)] += k;
       }
     });
-    return bending + barrier + fidelity(X);
+    return sum + fidelity(X);
   }
 
 private:
@@ -106,6 +119,7 @@ private:
 
   const Hinge_mesh& m_mesh;
   const Points* m_anchor = nullptr;
+  const Junction_curves* m_curves = nullptr;
   Bending_energy m_bending;
   Sliver_barrier m_barrier;
   std::vector<double> m_weight; // empty without the fidelity term

@@ -1,0 +1,135 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The input contract's part that a multi-label surface can break, checked first: points and
+// triangles, each triangle on three distinct existing points and between two different labels,
+// within the solver's 32-bit indices, and each interface (the triangles of one pair of labels)
+// consistently oriented: where two of its triangles share an edge, they run through it in
+// opposite directions once the pair's triangles all point from its smaller label into its larger
+// one. Several interfaces may meet along an edge (a junction line), and one interface may meet
+// itself there (two sheets touching); neither is a defect.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_CHECK_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_CHECK_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// A side of a triangle of a multi-label surface: the edge (a < b), its interface, the triangle
+// and whether it runs from a to b once oriented from the smaller label into the larger.
+struct Interface_side
+{
+  std::size_t a, b, interface, face;
+  bool forward;
+
+  bool same_edge(const Interface_side& o) const { return a == o.a && b == o.b; }
+};
+
+// The sides of the triangles, sorted by edge, then interface, then triangle; `interface_of[f]`
+// numbers triangle f's pair of labels, `flipped[f]` says whether its labels run from the larger.
+template <typename TriangleRange>
+std::vector<Interface_side> interface_sides(const TriangleRange& triangles, const std::vector<std::size_t>& interface_of,
+                                            const std::vector<bool>& flipped)
+{
+  std::vector<Interface_side> sides;
+  sides.reserve(3 * triangles.size());
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const std::size_t s = std::size_t(triangles[f][c]), t = std::size_t(triangles[f][(c + 1) % 3]);
+      sides.push_back({(std::min)(s, t), (std::max)(s, t), interface_of[f], f, (s < t) != flipped[f]});
+    }
+  std::sort(sides.begin(), sides.end(), [](const Interface_side& x, const Interface_side& y) {
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.interface != y.interface ? x.interface < y.interface
+                                                                                       : x.face < y.face;
+  });
+  return sides;
+}
+
+template <typename Integer>
+bool is_negative(Integer v)
+{
+  if constexpr(std::is_signed_v<Integer>)
+    return v < 0;
+  else
+    return false;
+}
+
+// The first defect of the surface of `n` points; on none, `interface_of` and `flipped` as for
+// interface_sides().
+template <typename TriangleRange, typename LabelPairRange>
+Input_error interface_error(std::size_t n, const TriangleRange& triangles, const LabelPairRange& face_labels,
+                            std::vector<std::size_t>& interface_of, std::vector<bool>& flipped)
+{
+  const std::size_t m = static_cast<std::size_t>(triangles.size());
+  if(n == 0)
+    return empty_mesh_error();
+  if(m == 0)
+    return no_faces_error();
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const auto v = triangles[f][c];
+      if(is_negative(v) || std::size_t(v) >= n)
+        return missing_vertex_error(f, v, n);
+      if(c > 0 && (triangles[f][0] == v || (c == 2 && triangles[f][1] == v)))
+        return repeated_vertex_error(f, std::size_t(v));
+    }
+    if(face_labels[f][0] == face_labels[f][1])
+      return same_labels_error(f);
+  }
+  if(n > (std::numeric_limits<Index>::max)() || m > Hinge_mesh::max_faces)
+    return mesh_too_large_error((std::numeric_limits<Index>::max)(), Hinge_mesh::max_faces);
+
+  // The interfaces, numbered in the order of their pairs of labels.
+  std::vector<std::size_t> order(m);
+  for(std::size_t f = 0; f < m; ++f)
+    order[f] = f;
+  const auto pair = [&](std::size_t f) {
+    const auto& l = face_labels[f];
+    return l[0] < l[1] ? std::make_pair(l[0], l[1]) : std::make_pair(l[1], l[0]);
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t f, std::size_t g) { return pair(f) < pair(g); });
+  interface_of.assign(m, 0);
+  flipped.assign(m, false);
+  for(std::size_t r = 0; r < m; ++r)
+  {
+    interface_of[order[r]] = r == 0 ? 0 : interface_of[order[r - 1]] + (pair(order[r]) != pair(order[r - 1]));
+    flipped[order[r]] = face_labels[order[r]][1] < face_labels[order[r]][0];
+  }
+
+  const std::vector<Interface_side> sides = interface_sides(triangles, interface_of, flipped);
+  for(std::size_t i = 0, j = 0; i < sides.size(); i = j)
+  {
+    while(j < sides.size() && sides[j].same_edge(sides[i]) && sides[j].interface == sides[i].interface)
+      ++j;
+    if(j - i == 2 && sides[i].forward == sides[i + 1].forward)
+    {
+      const std::size_t from = sides[i].forward != flipped[sides[i].face] ? sides[i].a : sides[i].b;
+      return inconsistent_orientation_error(sides[i].face, sides[i + 1].face, from,
+                                            from == sides[i].a ? sides[i].b : sides[i].a);
+    }
+  }
+  return {};
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_CHECK_H
