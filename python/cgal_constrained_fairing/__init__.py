@@ -6,6 +6,9 @@ K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy a
 - `fair` fairs a mesh ``(vertices, faces)`` within a tolerance ``epsilon``;
 - `mean_edge_length` and `estimate_noise_level` help choose ``epsilon``;
 - `read_mesh` and `write_mesh` read and write OFF, OBJ, PLY and STL files;
+- `label_surfaces` makes a label map's surfaces, one closed surface per label with the interfaces
+  shared exactly, faired together within their voxels; `fair_interfaces` fairs such a
+  multi-label triangle soup;
 - `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files on a Dask cluster,
   also from the command line: ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.
 
@@ -20,13 +23,15 @@ Example
 from ._errors import Defect, InputError
 from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length, set_max_threads
 from ._io import read_mesh, write_mesh
+from ._labels import LabelSurfaces, fair_interfaces, label_surfaces
 from ._report import Report, Status
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "Defect", "InputError", "Report", "Status", "estimate_noise_level", "fair", "fair_files",
-    "max_threads", "mean_edge_length", "read_mesh", "set_max_threads", "write_mesh",
+    "Defect", "InputError", "LabelSurfaces", "Report", "Status", "estimate_noise_level", "fair",
+    "fair_files", "fair_interfaces", "label_surfaces", "max_threads", "mean_edge_length",
+    "read_mesh", "set_max_threads", "write_mesh",
 ]
 
 

@@ -153,6 +153,34 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
     V = vertices_array(vertices)
     n = V.shape[0]
     F = faces_array(faces, n)
+    options = call_options(epsilon, bound, objective, method, fidelity_weight, sliver_barrier_weight,
+                           energy_decrease_threshold, max_iterations, initial_smoothing_steps,
+                           conjugate_gradient_iterations)
+
+    if tolerance is not None:
+        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
+    if fixed is not None:
+        fixed = selection_array(fixed, "fixed", n, "vertex")
+    if box_half_extents is not None:
+        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
+        if box_half_extents.shape == (3,):
+            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
+    if box_centers is not None:
+        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
+    if region is not None:
+        region = _region_indices(region, F.shape[0])
+
+    with _Progress(progress, options) as callback:
+        outcome = _core.fair(V, F, options, tolerance, fixed, box_half_extents, box_centers,
+                             region, callback)
+    return result_of(outcome)
+
+
+def call_options(epsilon, bound, objective, method, fidelity_weight, sliver_barrier_weight,
+                 energy_decrease_threshold, max_iterations, initial_smoothing_steps,
+                 conjugate_gradient_iterations):
+    """The options of a call as `fair` takes them, checked, in the compiled module's form: only
+    those the user gave are set, the others keep the library's defaults."""
     options = _core.Options()
     options.epsilon = number_argument(epsilon, "epsilon", Defect.INVALID_EPSILON)
     options.bound = "" if bound is None else choice_argument(bound, "bound", ("ball", "box"))
@@ -180,22 +208,11 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         options.conjugate_gradient_iterations = count_argument(conjugate_gradient_iterations,
                                                                "conjugate_gradient_iterations")
 
-    if tolerance is not None:
-        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
-    if fixed is not None:
-        fixed = selection_array(fixed, "fixed", n, "vertex")
-    if box_half_extents is not None:
-        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
-        if box_half_extents.shape == (3,):
-            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
-    if box_centers is not None:
-        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
-    if region is not None:
-        region = _region_indices(region, F.shape[0])
+    return options
 
-    with _Progress(progress, options) as callback:
-        outcome = _core.fair(V, F, options, tolerance, fixed, box_half_extents, box_centers,
-                             region, callback)
+
+def result_of(outcome):
+    """The new vertices and the `Report` of a call of the compiled module; raises on failure."""
     status = outcome["status"].name
     if status == "INVALID_INPUT":
         raise InputError(outcome["defect"].name, outcome["message"])

@@ -10,7 +10,10 @@
 // progress callback and, every fifth of a second, to let Ctrl-C through.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
+#include <CGAL/Polygon_mesh_processing/label_surface.h>
+#include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 
 #include "front_end/Epsilon_grammar.h"
 #include "front_end/Mean_edge_length.h"
@@ -58,21 +61,26 @@ using Index_array = py::array_t<std::int64_t, py::array::c_style>;
 using Mask_array = py::array_t<bool, py::array::c_style>;
 using Triangle = std::array<std::size_t, 3>;
 
+// The row of a vertex of the mesh, or of a point of a soup.
+std::size_t row_of(vertex_descriptor v) { return std::size_t(v.idx()); }
+std::size_t row_of(std::size_t k) { return k; }
+
 // A read-only property map over the rows of a C-contiguous array of `Columns` elements per
-// vertex, vertex i of the mesh being row i: the per-vertex data of the named parameters.
-template <typename Value, int Columns, typename Element = double>
+// vertex, vertex i of the mesh (or point i of a soup) being row i: the per-vertex data of the
+// named parameters.
+template <typename Value, int Columns, typename Element = double, typename Key = vertex_descriptor>
 struct Row_map
 {
-  using key_type = vertex_descriptor;
+  using key_type = Key;
   using value_type = Value;
   using reference = Value;
   using category = boost::readable_property_map_tag;
 
   const Element* data = nullptr;
 
-  friend Value get(const Row_map& map, vertex_descriptor v)
+  friend Value get(const Row_map& map, Key v)
   {
-    const Element* row = map.data + std::size_t(v.idx()) * Columns;
+    const Element* row = map.data + row_of(v) * Columns;
     if constexpr(Columns == 1)
       return row[0];
     else if constexpr(std::is_same_v<Value, Point>)
@@ -84,18 +92,18 @@ struct Row_map
 
 // A property map over an output array of one value per vertex: the deviations and the vertices
 // at their bound.
-template <typename Value>
+template <typename Value, typename Key = vertex_descriptor>
 struct Array_map
 {
-  using key_type = vertex_descriptor;
+  using key_type = Key;
   using value_type = Value;
   using reference = Value&;
   using category = boost::read_write_property_map_tag;
 
   Value* data = nullptr;
 
-  friend Value get(const Array_map& map, vertex_descriptor v) { return map.data[std::size_t(v.idx())]; }
-  friend void put(const Array_map& map, vertex_descriptor v, const Value& value) { map.data[std::size_t(v.idx())] = value; }
+  friend Value get(const Array_map& map, Key v) { return map.data[row_of(v)]; }
+  friend void put(const Array_map& map, Key v, const Value& value) { map.data[row_of(v)] = value; }
 };
 
 // Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the checks of
@@ -222,6 +230,36 @@ struct Options
   }
 };
 
+// The result as the Python layer reads it, with the output arrays when the call succeeded.
+py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_array& out,
+                   const py::array_t<double>& deviation, const Mask_array& at_bound)
+{
+  py::dict report;
+  report["status"] = result.status;
+  report["message"] = result.message;
+  report["defect"] = result.defect;
+  report["number_of_iterations"] = result.number_of_iterations;
+  report["number_of_cg_iterations"] = result.number_of_cg_iterations;
+  report["number_of_energy_evaluations"] = result.number_of_energy_evaluations;
+  report["initial_energy"] = result.initial_energy;
+  report["final_energy"] = result.final_energy;
+  report["initial_bending_energy"] = result.initial_bending_energy;
+  report["final_bending_energy"] = result.final_bending_energy;
+  report["max_deviation"] = result.max_deviation;
+  report["number_of_vertices_at_bound"] = result.number_of_vertices_at_bound;
+  report["number_of_fixed_vertices"] = result.number_of_fixed_vertices;
+  report["number_of_folded_faces"] = result.number_of_folded_faces;
+  report["number_of_unfolded_faces"] = result.number_of_unfolded_faces;
+  report["number_of_degenerate_edges"] = result.number_of_degenerate_edges;
+  if(result)
+  {
+    report["vertices"] = out;
+    report["deviation"] = deviation;
+    report["at_bound"] = at_bound;
+  }
+  return report;
+}
+
 // constrained_fairing() on the arrays, which the Python layer has checked for shape (every
 // per-vertex array has a row per vertex, the region's faces are distinct and exist), with the
 // settings the user gave. Every per-vertex map is given, filled with what the call without it
@@ -310,30 +348,138 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
   }
   callback.raise_pending();
 
-  py::dict report;
-  report["status"] = result.status;
-  report["message"] = result.message;
-  report["defect"] = result.defect;
-  report["number_of_iterations"] = result.number_of_iterations;
-  report["number_of_cg_iterations"] = result.number_of_cg_iterations;
-  report["number_of_energy_evaluations"] = result.number_of_energy_evaluations;
-  report["initial_energy"] = result.initial_energy;
-  report["final_energy"] = result.final_energy;
-  report["initial_bending_energy"] = result.initial_bending_energy;
-  report["final_bending_energy"] = result.final_bending_energy;
-  report["max_deviation"] = result.max_deviation;
-  report["number_of_vertices_at_bound"] = result.number_of_vertices_at_bound;
-  report["number_of_fixed_vertices"] = result.number_of_fixed_vertices;
-  report["number_of_folded_faces"] = result.number_of_folded_faces;
-  report["number_of_unfolded_faces"] = result.number_of_unfolded_faces;
-  report["number_of_degenerate_edges"] = result.number_of_degenerate_edges;
-  if(result)
+  return report_of(result, out, deviation, at_bound);
+}
+
+using Label = std::int64_t;
+using Label_array = py::array_t<Label, py::array::c_style>;
+
+// label_surface_nets() on a C-contiguous 3-D array of labels, as (points, triangles, labels).
+py::tuple label_surface_nets(const Label_array& labels, const std::array<double, 3>& spacing,
+                             const std::array<double, 3>& origin, Label background)
+{
+  const std::array<std::size_t, 3> size{std::size_t(labels.shape(0)), std::size_t(labels.shape(1)),
+                                        std::size_t(labels.shape(2))};
+  std::vector<Point> points;
+  std::vector<std::array<std::int64_t, 3> > triangles;
+  std::vector<std::array<Label, 2> > face_labels;
   {
-    report["vertices"] = out;
-    report["deviation"] = deviation;
-    report["at_bound"] = at_bound;
+    py::gil_scoped_release release;
+    PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, background);
   }
-  return report;
+  Float_array V({py::ssize_t(points.size()), py::ssize_t(3)});
+  Index_array F({py::ssize_t(triangles.size()), py::ssize_t(3)});
+  Label_array L({py::ssize_t(face_labels.size()), py::ssize_t(2)});
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int c = 0; c < 3; ++c)
+      V.mutable_data()[3 * i + std::size_t(c)] = points[i][c];
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    std::copy(triangles[f].begin(), triangles[f].end(), F.mutable_data() + 3 * f);
+    std::copy(face_labels[f].begin(), face_labels[f].end(), L.mutable_data() + 2 * f);
+  }
+  return py::make_tuple(V, F, L);
+}
+
+// constrained_fairing_of_interfaces() on the arrays, which the Python layer has checked for
+// shape; as fair(), every per-point map is given.
+py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels,
+                         const Options& options, const std::optional<Float_array>& tolerance,
+                         const std::optional<Mask_array>& fixed, const std::optional<Float_array>& box_half_extents,
+                         const std::optional<Float_array>& box_centers, py::object progress)
+{
+  using Key = std::size_t;
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
+  const bool box = options.bound == "box" || (options.bound.empty() && (box_half_extents || box_centers));
+  Python_callback callback(std::move(progress));
+  py::array_t<double> deviation(static_cast<py::ssize_t>(n));
+  Mask_array at_bound(static_cast<py::ssize_t>(n));
+  Float_array out({static_cast<py::ssize_t>(n), py::ssize_t(3)});
+  double* out_data = out.mutable_data();
+  PMP::Constrained_fairing_result result;
+  {
+    py::gil_scoped_release release;
+    std::vector<Point> points;
+    points.reserve(n);
+    for(std::size_t i = 0; i < n; ++i)
+      points.emplace_back(vertices.data()[3 * i], vertices.data()[3 * i + 1], vertices.data()[3 * i + 2]);
+    std::vector<std::array<std::int64_t, 3> > triangles(m);
+    std::vector<std::array<Label, 2> > labels(m);
+    for(std::size_t f = 0; f < m; ++f)
+    {
+      std::copy(faces.data() + 3 * f, faces.data() + 3 * f + 3, triangles[f].begin());
+      std::copy(face_labels.data() + 2 * f, face_labels.data() + 2 * f + 2, labels[f].begin());
+    }
+    std::vector<double> epsilons(tolerance ? 0 : n, options.epsilon), cube(box_half_extents ? 0 : 3 * n, options.epsilon);
+    std::unique_ptr<bool[]> none_fixed(fixed ? nullptr : new bool[n]());
+    const auto np = CFP::vertex_tolerance_map(
+      Row_map<double, 1, double, Key>{tolerance ? tolerance->data() : epsilons.data()},
+      CFP::vertex_deviation_map(
+        Array_map<double, Key>{deviation.mutable_data()},
+        CFP::vertex_at_bound_map(
+          Array_map<bool, Key>{at_bound.mutable_data()},
+          CFP::iteration_callback(std::ref(callback), CGAL::parameters::vertex_is_constrained_map(Row_map<bool, 1, bool, Key>{
+                                                        fixed ? fixed->data() : none_fixed.get()})))));
+    const CF::Fairing_settings settings = options.settings();
+    if(box)
+      result = CF::fair_interfaces(
+        points, triangles, labels, options.epsilon, settings,
+        CFP::deviation_bound(PMP::Deviation_bound::BOX,
+                             CFP::vertex_box_half_extents_map(
+                               Row_map<std::array<double, 3>, 3, double, Key>{box_half_extents ? box_half_extents->data()
+                                                                                                : cube.data()},
+                               CFP::vertex_box_center_map(
+                                 Row_map<Point, 3, double, Key>{box_centers ? box_centers->data() : vertices.data()}, np))));
+    else
+      result = CF::fair_interfaces(points, triangles, labels, options.epsilon, settings, np);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      out_data[3 * i] = points[i].x();
+      out_data[3 * i + 1] = points[i].y();
+      out_data[3 * i + 2] = points[i].z();
+    }
+  }
+  callback.raise_pending();
+  return report_of(result, out, deviation, at_bound);
+}
+
+// label_surface(): the closed surface of one label, as (vertices, faces).
+py::tuple label_surface(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels,
+                        Label label)
+{
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
+  Mesh mesh;
+  {
+    py::gil_scoped_release release;
+    std::vector<Point> points;
+    points.reserve(n);
+    for(std::size_t i = 0; i < n; ++i)
+      points.emplace_back(vertices.data()[3 * i], vertices.data()[3 * i + 1], vertices.data()[3 * i + 2]);
+    std::vector<std::array<std::size_t, 3> > triangles(m);
+    std::vector<std::array<Label, 2> > labels(m);
+    for(std::size_t f = 0; f < m; ++f)
+    {
+      for(std::size_t c = 0; c < 3; ++c)
+        triangles[f][c] = std::size_t(faces.data()[3 * f + c]);
+      std::copy(face_labels.data() + 2 * f, face_labels.data() + 2 * f + 2, labels[f].begin());
+    }
+    PMP::label_surface(points, triangles, labels, label, mesh);
+  }
+  Float_array V({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
+  Index_array F({py::ssize_t(mesh.number_of_faces()), py::ssize_t(3)});
+  double* v = V.mutable_data();
+  for(vertex_descriptor u : mesh.vertices())
+  {
+    const Point& p = mesh.point(u);
+    *v++ = p.x();
+    *v++ = p.y();
+    *v++ = p.z();
+  }
+  std::int64_t* f = F.mutable_data();
+  for(face_descriptor g : mesh.faces())
+    for(vertex_descriptor u : vertices_around_face(mesh.halfedge(g), mesh))
+      *f++ = std::int64_t(u.idx());
+  return py::make_tuple(V, F);
 }
 
 // Reads a file as the command-line tool does (Mesh_file.h); a file of triangles gives its
@@ -524,6 +670,13 @@ PYBIND11_MODULE(_core, m)
     },
     py::arg("text"));
   m.attr("default_epsilon") = FE::default_epsilon_text;
+  m.def("label_surface_nets", &label_surface_nets, py::arg("labels"), py::arg("spacing"), py::arg("origin"),
+        py::arg("background"));
+  m.def("fair_interfaces", &fair_interfaces, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),
+        py::arg("options"), py::arg("tolerance"), py::arg("fixed"), py::arg("box_half_extents"),
+        py::arg("box_centers"), py::arg("progress"));
+  m.def("label_surface", &label_surface, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),
+        py::arg("label"));
   m.def("read_mesh", &read_mesh, py::arg("path"));
   m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
   m.def("max_threads", &max_threads);

@@ -41,7 +41,7 @@ along an edge or at a corner: `label_surface()` splits it there.
 
 \tparam Label an integer type
 \tparam PointRange a `std::vector` of a point type constructible from three `double`
-\tparam TriangleRange a `std::vector` of `std::array<std::size_t, 3>`
+\tparam TriangleRange a `std::vector` of `std::array<I, 3>`, `I` an integer type
 \tparam LabelPairRange a `std::vector` of `std::array<Label, 2>`
 
 \param labels the label map, `size[0] * size[1] * size[2]` values in C order
@@ -60,6 +60,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
                         const Label background = Label(0))
 {
   using Point = typename PointRange::value_type;
+  using Point_index = typename TriangleRange::value_type::value_type;
   using Signed = std::ptrdiff_t;
   const Signed n[3] = {Signed(size[0]), Signed(size[1]), Signed(size[2])};
   const auto label = [&](Signed i, Signed j, Signed k) {
@@ -130,8 +131,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     std::array<std::size_t, 4> p;
     for(int c = 0; c < 4; ++c)
       p[std::size_t(c)] = first + point_of_cell[quad[std::size_t(c)]];
-    triangles.push_back({p[0], p[1], p[2]});
-    triangles.push_back({p[0], p[2], p[3]});
+    triangles.push_back({Point_index(p[0]), Point_index(p[1]), Point_index(p[2])});
+    triangles.push_back({Point_index(p[0]), Point_index(p[2]), Point_index(p[3])});
     face_labels.push_back({la, lb});
     face_labels.push_back({la, lb});
   });

@@ -1,0 +1,216 @@
+"""Label maps to surfaces: one closed surface per label, the interfaces shared exactly."""
+
+from dataclasses import dataclass
+from typing import Optional, Sequence, Tuple
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from . import _core
+from ._arrays import invalid, numbers_array, selection_array, vertices_array
+from ._errors import Defect, InputError
+from ._fairing import Progress, _Progress, call_options, result_of
+from ._report import Report
+
+
+@dataclass(frozen=True)
+class LabelSurfaces:
+    """The surfaces of a label map, as one multi-label triangle soup.
+
+    Attributes
+    ----------
+    vertices : numpy.ndarray
+        ``(n, 3)`` float64, the points, shared by the surfaces of the labels they separate.
+    faces : numpy.ndarray
+        ``(m, 3)`` int64, the triangles.
+    face_labels : numpy.ndarray
+        ``(m, 2)`` int64: the normal of face ``f`` points from the region of
+        ``face_labels[f, 0]`` into that of ``face_labels[f, 1]``.
+    unfaired_vertices : numpy.ndarray
+        ``(n, 3)`` float64, the surface-nets points: the centres of the voxel boxes in which the
+        faired points stay.
+    report : Report or None
+        What the fairing did; ``None`` when it was not asked for.
+    labels : numpy.ndarray
+        The labels that have a surface, sorted (the background is not among them).
+    """
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    face_labels: np.ndarray
+    unfaired_vertices: np.ndarray
+    report: Optional[Report]
+    labels: np.ndarray
+
+    def surface(self, label: int) -> Tuple[np.ndarray, np.ndarray]:
+        """The closed surface of `label`, oriented outward, as ``(V, F)``.
+
+        Its points are copies of `vertices`, bit for bit, so that two labels' surfaces fit
+        together exactly. Where the label's voxels touch only along an edge or at a corner the
+        surface is split there into sheets that touch (``CGAL::Polygon_mesh_processing::
+        label_surface()``).
+        """
+        if label not in set(self.labels.tolist()):
+            raise invalid(f"label {label!r} has no surface (labels: {self.labels.tolist()})")
+        return _core.label_surface(self.vertices, self.faces, self.face_labels, int(label))
+
+
+def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
+                   origin: Sequence[float] = (0, 0, 0), *,
+                   fair: bool = True,
+                   background: int = 0,
+                   labels_to_mesh: Optional[Sequence[int]] = None,
+                   epsilon: Optional[float] = None,
+                   objective: str = "fairest",
+                   max_iterations: Optional[int] = None,
+                   progress: Progress = None) -> LabelSurfaces:
+    """The surfaces of a 3-D label map, faired together within their voxels.
+
+    Multi-label surface nets (``CGAL::Polygon_mesh_processing::label_surface_nets()``): a point
+    at the centre of each cube of 8 voxel centres whose labels differ, two triangles for each pair
+    of neighbouring voxels with different labels. Then, with `fair`, all the interfaces are faired
+    at once (``constrained_fairing_of_interfaces()``): each point stays in its voxel box (half
+    the spacing around its surface-nets position, exactly in double), the interfaces stay shared,
+    and the junction lines where three labels meet are faired as curves.
+
+    Parameters
+    ----------
+    labels : array_like, shape (I, J, K)
+        The label of each voxel, any integer dtype; voxel ``[i, j, k]`` has its centre at
+        ``origin + (i, j, k) * spacing``. Never modified.
+    spacing : sequence of 3 floats
+        The distance between voxel centres along each axis, positive (NIfTI's ``pixdim``).
+    origin : sequence of 3 floats
+        The centre of voxel ``[0, 0, 0]``.
+    fair : bool
+        Fair the surfaces (default); ``False`` returns the surface nets.
+    background : int
+        The label of the outside (also of everything outside the array): it gets no surface.
+    labels_to_mesh : sequence of int, optional
+        The labels to make surfaces of; the others count as `background`. Default: all.
+    epsilon : float, optional
+        A cap on how far a point moves; default: no cap beyond the voxel box.
+    objective : {"fairest", "accurate"}
+        As in `fair`.
+    max_iterations : int, optional
+        As in `fair`.
+    progress : None, True or callable, optional
+        As in `fair`.
+
+    Returns
+    -------
+    LabelSurfaces
+
+    Raises
+    ------
+    InputError
+        (a ValueError) `labels` not 3-D or not integers, `spacing` not positive and finite,
+        `origin` not finite (``INVALID_ARGUMENT``); a map with nothing but background
+        (``NO_FACES``).
+    """
+    L = np.asarray(labels)
+    if L.ndim != 3:
+        raise invalid(f"labels must be a 3-D array (got {L.ndim} dimensions)")
+    if L.dtype.kind not in "iu":
+        raise invalid(f"labels must have an integer dtype (got {L.dtype})")
+    h = numbers_array(spacing, "spacing", [(3,)])
+    o = numbers_array(origin, "origin", [(3,)])
+    if not (np.isfinite(h).all() and (h > 0).all()):
+        raise invalid(f"spacing must be three positive finite numbers (got {h.tolist()})")
+    if not np.isfinite(o).all():
+        raise invalid(f"origin must be three finite numbers (got {o.tolist()})")
+    L = L.astype(np.int64)  # a copy: the user's array is never touched
+    if labels_to_mesh is not None:
+        L[~np.isin(L, np.asarray(labels_to_mesh, dtype=np.int64))] = background
+    V, F, FL = _core.label_surface_nets(np.ascontiguousarray(L), h.tolist(), o.tolist(), int(background))
+    present = np.unique(FL)
+    present = present[present != background]
+    if F.shape[0] == 0:
+        raise InputError(Defect.NO_FACES, "the label map holds nothing but the background label")
+    report = None
+    W = V.copy()
+    if fair:
+        cap = float(np.linalg.norm(h)) if epsilon is None else epsilon
+        W, report = fair_interfaces(V, F, FL, cap, box_half_extents=h / 2, objective=objective,
+                                    max_iterations=max_iterations, progress=progress)
+    return LabelSurfaces(W, F, FL, V, report, present)
+
+
+def fair_interfaces(vertices: ArrayLike, faces: ArrayLike, face_labels: ArrayLike,
+                    epsilon: Optional[float] = None, *,
+                    box_half_extents: Optional[ArrayLike] = None,
+                    box_centers: Optional[ArrayLike] = None,
+                    tolerance: Optional[ArrayLike] = None,
+                    fixed: Optional[ArrayLike] = None,
+                    objective: str = "fairest",
+                    fidelity_weight: Optional[float] = None,
+                    max_iterations: Optional[int] = None,
+                    energy_decrease_threshold: Optional[float] = None,
+                    sliver_barrier_weight: Optional[float] = None,
+                    initial_smoothing_steps: Optional[int] = None,
+                    progress: Progress = None) -> Tuple[np.ndarray, Report]:
+    """Fair a multi-label triangle soup, all its interfaces at once, within a bound.
+
+    ``CGAL::Polygon_mesh_processing::constrained_fairing_of_interfaces()``: the soup's triangles
+    each separate two labels (`face_labels`, the normal pointing from the first's region into
+    the second's), as `label_surfaces` makes them; each interface is faired by the bending energy,
+    the junction lines where three labels meet as curves; points where lines end or branch, or
+    where four labels meet, stay.
+
+    Parameters
+    ----------
+    vertices, faces : array_like
+        As in `fair`; the soup need not be a manifold.
+    face_labels : array_like, shape (m, 2)
+        The two labels of each face, different, any integer dtype.
+    epsilon : float, optional
+        The bound of every point, and the cap of the boxes; default: the largest box diagonal
+        (so only the boxes bound) when boxes are given. Required otherwise.
+    box_half_extents, box_centers, tolerance, fixed, objective, fidelity_weight, max_iterations,
+    energy_decrease_threshold, sliver_barrier_weight, initial_smoothing_steps, progress
+        As in `fair`.
+
+    Returns
+    -------
+    new_vertices : numpy.ndarray
+        ``(n, 3)`` float64.
+    report : Report
+
+    Raises
+    ------
+    InputError
+        (a ValueError) As `fair`; also a face with the same label on both sides
+        (``INVALID_FACE``) and two faces of one interface running the same way through their
+        shared edge (``INCONSISTENT_ORIENTATION``). The input arrays are never modified.
+    """
+    V = vertices_array(vertices)
+    n = V.shape[0]
+    F = np.ascontiguousarray(np.asarray(faces))
+    if F.ndim != 2 or F.shape[1] != 3 or F.dtype.kind not in "iu":
+        raise invalid(f"faces must be an (m, 3) integer array (got shape {F.shape}, dtype {F.dtype})")
+    F = F.astype(np.int64)
+    FL = np.asarray(face_labels)
+    if FL.shape != (F.shape[0], 2) or FL.dtype.kind not in "iu":
+        raise invalid(f"face_labels must be an ({F.shape[0]}, 2) integer array "
+                      f"(got shape {FL.shape}, dtype {FL.dtype})")
+    FL = np.ascontiguousarray(FL, dtype=np.int64)
+    if box_half_extents is not None:
+        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
+        if box_half_extents.shape == (3,):
+            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
+    if epsilon is None:
+        if box_half_extents is None:
+            raise invalid("epsilon is needed without box_half_extents")
+        epsilon = 2 * float(np.linalg.norm(box_half_extents, axis=1).max(initial=0))
+    options = call_options(epsilon, None, objective, None, fidelity_weight, sliver_barrier_weight,
+                           energy_decrease_threshold, max_iterations, initial_smoothing_steps, None)
+    if box_centers is not None:
+        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
+    if tolerance is not None:
+        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
+    if fixed is not None:
+        fixed = selection_array(fixed, "fixed", n, "vertex")
+    with _Progress(progress, options) as callback:
+        outcome = _core.fair_interfaces(V, F, FL, options, tolerance, fixed, box_half_extents,
+                                        box_centers, callback)
+    return result_of(outcome)
