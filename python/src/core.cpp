@@ -381,6 +381,27 @@ py::tuple label_surface_nets(const Label_array& labels, const std::array<double,
   return py::make_tuple(V, F, L);
 }
 
+// A multi-label soup of the arrays, which the Python layer has checked for shape.
+struct Label_soup
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::int64_t, 3> > triangles;
+  std::vector<std::array<Label, 2> > labels;
+
+  Label_soup(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels)
+    : triangles(std::size_t(faces.shape(0))), labels(std::size_t(faces.shape(0)))
+  {
+    const double* p = vertices.data();
+    for(py::ssize_t i = 0; i < vertices.shape(0); ++i, p += 3)
+      points.emplace_back(p[0], p[1], p[2]);
+    for(std::size_t f = 0; f < triangles.size(); ++f)
+    {
+      std::copy(faces.data() + 3 * f, faces.data() + 3 * f + 3, triangles[f].begin());
+      std::copy(face_labels.data() + 2 * f, face_labels.data() + 2 * f + 2, labels[f].begin());
+    }
+  }
+};
+
 // constrained_fairing_of_interfaces() on the arrays, which the Python layer has checked for
 // shape; as fair(), every per-point map is given.
 py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels,
@@ -389,7 +410,7 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
                          const std::optional<Float_array>& box_centers, py::object progress)
 {
   using Key = std::size_t;
-  const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
   const bool box = options.bound == "box" || (options.bound.empty() && (box_half_extents || box_centers));
   Python_callback callback(std::move(progress));
   py::array_t<double> deviation(static_cast<py::ssize_t>(n));
@@ -399,17 +420,7 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
   PMP::Constrained_fairing_result result;
   {
     py::gil_scoped_release release;
-    std::vector<Point> points;
-    points.reserve(n);
-    for(std::size_t i = 0; i < n; ++i)
-      points.emplace_back(vertices.data()[3 * i], vertices.data()[3 * i + 1], vertices.data()[3 * i + 2]);
-    std::vector<std::array<std::int64_t, 3> > triangles(m);
-    std::vector<std::array<Label, 2> > labels(m);
-    for(std::size_t f = 0; f < m; ++f)
-    {
-      std::copy(faces.data() + 3 * f, faces.data() + 3 * f + 3, triangles[f].begin());
-      std::copy(face_labels.data() + 2 * f, face_labels.data() + 2 * f + 2, labels[f].begin());
-    }
+    Label_soup soup(vertices, faces, face_labels);
     std::vector<double> epsilons(tolerance ? 0 : n, options.epsilon), cube(box_half_extents ? 0 : 3 * n, options.epsilon);
     std::unique_ptr<bool[]> none_fixed(fixed ? nullptr : new bool[n]());
     const auto np = CFP::vertex_tolerance_map(
@@ -423,7 +434,7 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
     const CF::Fairing_settings settings = options.settings();
     if(box)
       result = CF::fair_interfaces(
-        points, triangles, labels, options.epsilon, settings,
+        soup.points, soup.triangles, soup.labels, options.epsilon, settings,
         CFP::deviation_bound(PMP::Deviation_bound::BOX,
                              CFP::vertex_box_half_extents_map(
                                Row_map<std::array<double, 3>, 3, double, Key>{box_half_extents ? box_half_extents->data()
@@ -431,12 +442,12 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
                                CFP::vertex_box_center_map(
                                  Row_map<Point, 3, double, Key>{box_centers ? box_centers->data() : vertices.data()}, np))));
     else
-      result = CF::fair_interfaces(points, triangles, labels, options.epsilon, settings, np);
+      result = CF::fair_interfaces(soup.points, soup.triangles, soup.labels, options.epsilon, settings, np);
     for(std::size_t i = 0; i < n; ++i)
     {
-      out_data[3 * i] = points[i].x();
-      out_data[3 * i + 1] = points[i].y();
-      out_data[3 * i + 2] = points[i].z();
+      out_data[3 * i] = soup.points[i].x();
+      out_data[3 * i + 1] = soup.points[i].y();
+      out_data[3 * i + 2] = soup.points[i].z();
     }
   }
   callback.raise_pending();
@@ -447,23 +458,11 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
 py::tuple label_surface(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels,
                         Label label)
 {
-  const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
   Mesh mesh;
   {
     py::gil_scoped_release release;
-    std::vector<Point> points;
-    points.reserve(n);
-    for(std::size_t i = 0; i < n; ++i)
-      points.emplace_back(vertices.data()[3 * i], vertices.data()[3 * i + 1], vertices.data()[3 * i + 2]);
-    std::vector<std::array<std::size_t, 3> > triangles(m);
-    std::vector<std::array<Label, 2> > labels(m);
-    for(std::size_t f = 0; f < m; ++f)
-    {
-      for(std::size_t c = 0; c < 3; ++c)
-        triangles[f][c] = std::size_t(faces.data()[3 * f + c]);
-      std::copy(face_labels.data() + 2 * f, face_labels.data() + 2 * f + 2, labels[f].begin());
-    }
-    PMP::label_surface(points, triangles, labels, label, mesh);
+    const Label_soup soup(vertices, faces, face_labels);
+    PMP::label_surface(soup.points, soup.triangles, soup.labels, label, mesh);
   }
   Float_array V({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
   Index_array F({py::ssize_t(mesh.number_of_faces()), py::ssize_t(3)});

@@ -40,7 +40,7 @@ the label's region (the triangles are sorted by angle around the edge); at a poi
 triangles joined across edges make one vertex, and each other fan gets its own.
 
 \tparam PointRange a random access range of points convertible to the point type of `tmesh`
-\tparam TriangleRange a random access range of `std::array<std::size_t, 3>`
+\tparam TriangleRange a random access range of arrays of three point indices (any integer type)
 \tparam LabelPairRange a random access range of `std::array<Label, 2>`, one per triangle
 \tparam Label an integer type
 \tparam PolygonMesh a model of `MutableFaceGraph`
@@ -70,9 +70,9 @@ std::size_t label_surface(const PointRange& points, const TriangleRange& triangl
     const auto& sides = face_labels[f];
     if(sides[0] != label && sides[1] != label)
       continue;
-    const auto& t = triangles[f];
-    own.push_back(sides[0] == label ? std::array<std::size_t, 3>{t[0], t[1], t[2]}
-                                    : std::array<std::size_t, 3>{t[0], t[2], t[1]});
+    const std::size_t a = std::size_t(triangles[f][0]), b = std::size_t(triangles[f][1]),
+                      c = std::size_t(triangles[f][2]);
+    own.push_back(sides[0] == label ? std::array<std::size_t, 3>{a, b, c} : std::array<std::size_t, 3>{a, c, b});
   }
   const std::size_t m = own.size();
 
