@@ -26,6 +26,8 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 #include <cstdint>

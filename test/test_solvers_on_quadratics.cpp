@@ -14,6 +14,7 @@
 
 #include "test_support.h"
 
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Active_set_newton.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_lbfgs.h>
