@@ -1,0 +1,323 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Label maps to surfaces, judged against analytic interfaces:
+//  - a ball cut by a tilted plane into two labels, on 64^3 cubic voxels and 64 x 64 x 21 voxels
+//    of 1 x 1 x 3: the RMS distance of the points to their true interface (the sphere, the plane)
+//    and of the triple line's points to its circle, for the raw surface nets, the clamped
+//    Laplacian of VTK's vtkSurfaceNets3D (each point towards the mean of its neighbours on its
+//    interface or line, relaxation 0.5, clamped to its voxel box; at its best count of 1 to 1024
+//    iterations) and constrained_fairing_of_interfaces(); the smallest angle; the time against
+//    fairing each label's surface alone with constrained_fairing() in the same boxes;
+//  - a 256^3 map of 10 labels (the Voronoi cells of 10 seeds inside a ball): time and memory.
+//
+//   label_surfaces [--runs N] [--threads K] [--size 256]
+
+#include "benchmark_support.h"
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
+#include <CGAL/Polygon_mesh_processing/label_surface.h>
+#include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+using benchmark::Mesh;
+using benchmark::Point;
+using Label = std::int32_t;
+using Triangle = std::array<std::size_t, 3>;
+
+struct Soup
+{
+  std::array<double, 3> spacing;
+  std::vector<Point> points;
+  std::vector<Triangle> triangles;
+  std::vector<std::array<Label, 2> > face_labels;
+  std::vector<std::set<Label> > around; // the labels of each point's triangles
+};
+
+Soup make_soup(const std::vector<Label>& labels, const std::array<std::size_t, 3>& size,
+               const std::array<double, 3>& spacing)
+{
+  Soup soup;
+  soup.spacing = spacing;
+  PMP::label_surface_nets(labels.data(), size, spacing, {0, 0, 0}, soup.points, soup.triangles, soup.face_labels);
+  soup.around.resize(soup.points.size());
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    for(std::size_t v : soup.triangles[f])
+      soup.around[v].insert(soup.face_labels[f].begin(), soup.face_labels[f].end());
+  return soup;
+}
+
+// The ball phantom: centre c, radius R, cut by x = t z.
+constexpr double tilt = 0.3;
+
+struct Ball
+{
+  double c, R;
+
+  // RMS distances to the sphere, to the plane and to the triple circle, and all points together.
+  std::array<double, 4> distances(const Soup& soup, const std::vector<Point>& P) const
+  {
+    const double norm = std::sqrt(1 + tilt * tilt);
+    std::array<double, 4> sum{0, 0, 0, 0};
+    std::array<std::size_t, 4> count{0, 0, 0, 0};
+    for(std::size_t v = 0; v < P.size(); ++v)
+    {
+      const double x = P[v].x() - c, y = P[v].y() - c, z = P[v].z() - c;
+      const double to_plane = (x - tilt * z) / norm, to_sphere = std::sqrt(x * x + y * y + z * z) - R;
+      const std::set<Label>& a = soup.around[v];
+      double d2;
+      int kind;
+      if(a == std::set<Label>{0, 1} || a == std::set<Label>{0, 2})
+        d2 = to_sphere * to_sphere, kind = 0;
+      else if(a == std::set<Label>{1, 2})
+        d2 = to_plane * to_plane, kind = 1;
+      else
+      {
+        const double px = x - to_plane / norm, pz = z + tilt * to_plane / norm;
+        const double in_plane = std::sqrt(px * px + y * y + pz * pz) - R;
+        d2 = to_plane * to_plane + in_plane * in_plane, kind = 2;
+      }
+      sum[std::size_t(kind)] += d2, ++count[std::size_t(kind)];
+      sum[3] += d2, ++count[3];
+    }
+    std::array<double, 4> rms;
+    for(std::size_t k = 0; k < 4; ++k)
+      rms[k] = std::sqrt(sum[k] / double((std::max)(count[k], std::size_t(1))));
+    return rms;
+  }
+};
+
+// VTK's constrained smoothing of surface nets: each point towards the mean of its neighbours on
+// its interface (a point of one interface) or its junction line (a point of three labels with
+// two line neighbours), relaxation 0.5, clamped to its box; the others stay.
+class Clamped_laplacian
+{
+public:
+  explicit Clamped_laplacian(const Soup& soup) : m_soup(soup), m_neighbours(soup.points.size())
+  {
+    std::vector<std::set<std::size_t> > all(soup.points.size()), line(soup.points.size());
+    std::map<std::pair<std::size_t, std::size_t>, std::set<Label> > edges;
+    for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+      for(int c = 0; c < 3; ++c)
+      {
+        const std::size_t a = soup.triangles[f][std::size_t(c)], b = soup.triangles[f][std::size_t((c + 1) % 3)];
+        all[a].insert(b);
+        all[b].insert(a);
+        edges[{(std::min)(a, b), (std::max)(a, b)}].insert(soup.face_labels[f].begin(), soup.face_labels[f].end());
+      }
+    for(const auto& e : edges)
+      if(e.second.size() >= 3)
+      {
+        line[e.first.first].insert(e.first.second);
+        line[e.first.second].insert(e.first.first);
+      }
+    for(std::size_t v = 0; v < soup.points.size(); ++v)
+      if(soup.around[v].size() == 2)
+        m_neighbours[v].assign(all[v].begin(), all[v].end());
+      else if(soup.around[v].size() == 3 && line[v].size() == 2)
+        m_neighbours[v].assign(line[v].begin(), line[v].end());
+  }
+
+  void step(std::vector<Point>& P) const
+  {
+    std::vector<Point> Q = P;
+    for(std::size_t v = 0; v < P.size(); ++v)
+    {
+      if(m_neighbours[v].empty())
+        continue;
+      std::array<double, 3> mean{0, 0, 0};
+      for(std::size_t u : m_neighbours[v])
+        for(int c = 0; c < 3; ++c)
+          mean[std::size_t(c)] += P[u][c] / double(m_neighbours[v].size());
+      std::array<double, 3> q;
+      for(int c = 0; c < 3; ++c)
+      {
+        const double x = P[v][c] + 0.5 * (mean[std::size_t(c)] - P[v][c]), c0 = m_soup.points[v][c];
+        const double h = m_soup.spacing[std::size_t(c)] / 2;
+        q[std::size_t(c)] = std::clamp(x, c0 - h, c0 + h);
+      }
+      Q[v] = Point(q[0], q[1], q[2]);
+    }
+    P.swap(Q);
+  }
+
+private:
+  const Soup& m_soup;
+  std::vector<std::vector<std::size_t> > m_neighbours;
+};
+
+double smallest_angle(const Soup& soup, const std::vector<Point>& P)
+{
+  double smallest = 180;
+  for(const Triangle& t : soup.triangles)
+  {
+    const Point &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
+    smallest = (std::min)({smallest, benchmark::angle_deg(b - a, c - a), benchmark::angle_deg(a - b, c - b),
+                           benchmark::angle_deg(a - c, b - c)});
+  }
+  return smallest;
+}
+
+std::array<double, 3> half_of(const std::array<double, 3>& spacing)
+{
+  return {spacing[0] / 2, spacing[1] / 2, spacing[2] / 2};
+}
+
+// Joint fairing: its points, time and iterations.
+std::vector<Point> fair_jointly(const Soup& soup, int runs, double& seconds, std::size_t& iterations)
+{
+  std::vector<Point> P;
+  const double cap = 2 * *std::max_element(soup.spacing.begin(), soup.spacing.end());
+  seconds = benchmark::median_seconds(runs, [&] {
+    P = soup.points;
+    iterations = PMP::constrained_fairing_of_interfaces(P, soup.triangles, soup.face_labels, cap,
+                                                        CFP::box_half_extents(half_of(soup.spacing)))
+                   .number_of_iterations;
+  });
+  return P;
+}
+
+// Each label's closed surface faired alone, in the same boxes: the time of all of them.
+double fair_separately(const Soup& soup, const std::vector<Label>& labels, int runs)
+{
+  const double cap = 2 * *std::max_element(soup.spacing.begin(), soup.spacing.end());
+  std::vector<Mesh> meshes;
+  for(Label l : labels)
+  {
+    meshes.emplace_back();
+    PMP::label_surface(soup.points, soup.triangles, soup.face_labels, l, meshes.back());
+  }
+  return benchmark::median_seconds(runs, [&] {
+    for(const Mesh& mesh : meshes)
+    {
+      Mesh m = mesh;
+      PMP::constrained_fairing(m, cap, CFP::box_half_extents(half_of(soup.spacing)));
+    }
+  });
+}
+
+void ball_case(const std::array<double, 3>& spacing, int runs)
+{
+  const std::size_t n = 64;
+  const std::array<std::size_t, 3> size{n, n, std::size_t(double(n) / spacing[2])};
+  const Ball ball{31.5, 24};
+  std::vector<Label> labels(size[0] * size[1] * size[2], 0);
+  for(std::size_t i = 0; i < size[0]; ++i)
+    for(std::size_t j = 0; j < size[1]; ++j)
+      for(std::size_t k = 0; k < size[2]; ++k)
+      {
+        const double x = double(i) * spacing[0] - ball.c, y = double(j) * spacing[1] - ball.c,
+                     z = double(k) * spacing[2] - ball.c;
+        if(x * x + y * y + z * z < ball.R * ball.R)
+          labels[(i * size[1] + j) * size[2] + k] = x < tilt * z ? 1 : 2;
+      }
+  const Soup soup = make_soup(labels, size, spacing);
+
+  // The clamped Laplacian at its best count, by the RMS distance of all points.
+  const Clamped_laplacian laplacian(soup);
+  std::vector<Point> L = soup.points, best_L = L;
+  std::size_t best_count = 0, done = 0;
+  double best = ball.distances(soup, L)[3];
+  for(std::size_t count = 1; count <= 1024; count *= 2)
+  {
+    for(; done < count; ++done)
+      laplacian.step(L);
+    const double rms = ball.distances(soup, L)[3];
+    if(rms < best)
+      best = rms, best_count = count, best_L = L;
+  }
+  double seconds = 0;
+  std::size_t iterations = 0;
+  const std::vector<Point> P = fair_jointly(soup, runs, seconds, iterations);
+  const double separately = fair_separately(soup, {1, 2}, runs);
+  bool in_box = true;
+  for(std::size_t v = 0; v < P.size(); ++v)
+    for(int c = 0; c < 3; ++c)
+      in_box = in_box && std::abs(P[v][c] - soup.points[v][c]) <= soup.spacing[std::size_t(c)] / 2;
+
+  const auto raw = ball.distances(soup, soup.points), lap = ball.distances(soup, best_L), ours = ball.distances(soup, P);
+  std::cout << "ball cut by a plane, " << size[0] << " x " << size[1] << " x " << size[2] << " voxels of " << spacing[0]
+            << " x " << spacing[1] << " x " << spacing[2] << ": " << soup.points.size() << " points, "
+            << soup.triangles.size() << " triangles\n"
+            << std::setprecision(3) << "  RMS distance (voxels)    all     sphere  plane   triple line  smallest angle\n";
+  const auto row = [&](const char* name, const std::array<double, 4>& d, const std::vector<Point>& Q) {
+    std::cout << "  " << std::left << std::setw(22) << name << std::right << std::setw(8) << d[3] << std::setw(8) << d[0]
+              << std::setw(8) << d[1] << std::setw(13) << d[2] << std::setw(12) << smallest_angle(soup, Q) << "\n";
+  };
+  row("raw surface nets", raw, soup.points);
+  row(("clamped Laplacian x" + std::to_string(best_count)).c_str(), lap, best_L);
+  row("joint fairing", ours, P);
+  std::cout << "  ratios: " << raw[3] / ours[3] << "x closer than raw (triple line " << raw[2] / ours[2] << "x), "
+            << lap[3] / ours[3] << "x closer than the clamped Laplacian; every point in its box: "
+            << (in_box ? "yes" : "NO") << "\n  time: joint " << seconds << " s (" << iterations
+            << " iterations), each label alone " << separately << " s (" << separately / seconds << "x)\n";
+}
+
+void voronoi_case(std::size_t n, int runs)
+{
+  const std::array<std::size_t, 3> size{n, n, n};
+  const double c = double(n - 1) / 2, R = 0.43 * double(n);
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> uniform(-R / 2, R / 2);
+  std::vector<std::array<double, 3> > seeds(10);
+  for(auto& s : seeds)
+    s = {c + uniform(random), c + uniform(random), c + uniform(random)};
+  std::vector<Label> labels(n * n * n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const double x = double(i), y = double(j), z = double(k);
+        if((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c) >= R * R)
+          continue;
+        double nearest = 1e300;
+        for(std::size_t s = 0; s < seeds.size(); ++s)
+        {
+          const double d = (x - seeds[s][0]) * (x - seeds[s][0]) + (y - seeds[s][1]) * (y - seeds[s][1]) +
+                           (z - seeds[s][2]) * (z - seeds[s][2]);
+          if(d < nearest)
+            nearest = d, labels[(i * n + j) * n + k] = Label(s + 1);
+        }
+      }
+  benchmark::reset_peak_memory();
+  const auto start = std::chrono::steady_clock::now();
+  const Soup soup = make_soup(labels, size, {1, 1, 1});
+  const double nets = benchmark::seconds_since(start);
+  double seconds = 0;
+  std::size_t iterations = 0;
+  const std::vector<Point> P = fair_jointly(soup, runs, seconds, iterations);
+  const double peak = benchmark::peak_memory_bytes();
+  std::vector<Label> all;
+  for(Label l = 1; l <= 10; ++l)
+    all.push_back(l);
+  const double separately = fair_separately(soup, all, 1);
+  std::cout << "10 Voronoi labels in a ball, " << n << "^3 voxels: " << soup.points.size() << " points, "
+            << soup.triangles.size() << " triangles\n  surface nets " << nets << " s, joint fairing " << seconds
+            << " s (" << iterations << " iterations), together " << nets + seconds << " s; each label alone "
+            << separately << " s (" << separately / seconds << "x); peak memory " << peak / 1e6 << " MB\n";
+}
+
+int main(int argc, char* argv[])
+{
+  const benchmark::Arguments arguments(argc, argv);
+  const benchmark::Thread_limit threads(arguments);
+  std::cout << benchmark::machine_description() << std::endl;
+  ball_case({1, 1, 1}, arguments.runs);
+  ball_case({1, 1, 3}, arguments.runs);
+  voronoi_case(std::size_t(std::stoi(arguments.option("size", "256"))), arguments.runs);
+  return 0;
+}
