@@ -57,7 +57,7 @@ void check_values()
     // q = 4 sqrt(3) A / (l1^2 + l2^2 + l3^2) with legs 1 and apex a: A = sin(a) / 2, and the
     // base squared is 2 - 2 cos(a).
     const double a = degrees * CGAL_PI / 180, q = 2 * std::sqrt(3.) * std::sin(a) / (4 - 2 * std::cos(a));
-    const double q0 = CF::Sliver_barrier::threshold, r = q0 / (q + q0 / 100);
+    const double q0 = CF::Sliver_barrier::default_threshold, r = q0 / (q + q0 / 100);
     CHECK(std::abs(barrier(needle(degrees), 7) - 7 * (r - 1) * (r - 1)) <= 1e-12 * 7 * (r - 1) * (r - 1));
     // Dimensionless: the same at any size.
     CHECK(std::abs(barrier(needle(degrees, 1e-3), 7) - barrier(needle(degrees), 7)) <= 1e-9 * barrier(needle(degrees), 7));
@@ -65,8 +65,27 @@ void check_values()
     CHECK(std::abs(barrier(needle(degrees, 1, 5), 7) - 5 * barrier(needle(degrees), 7)) <= 1e-12 * 5 * barrier(needle(degrees), 7));
   }
   // The threshold is the needle of 3 degrees; better triangles cost nothing.
-  CHECK(std::abs(CF::Sliver_barrier::threshold - std::sqrt(3.) * std::sin(3 * CGAL_PI / 180)) < 1e-15);
+  CHECK(std::abs(CF::Sliver_barrier::default_threshold - std::sqrt(3.) * std::sin(3 * CGAL_PI / 180)) < 1e-15);
   CHECK(barrier(needle(3.1), 7) == 0 && barrier(needle(60), 7) == 0);
+  // Another threshold, the needle of 6 degrees: below it a cost, above it none; and no triangle
+  // with an angle under 6 degrees escapes it, the isosceles needle being the best of them.
+  const double q6 = CF::Sliver_barrier::threshold_of_angle(6);
+  CHECK(std::abs(CF::Sliver_barrier::threshold_of_angle(3) - CF::Sliver_barrier::default_threshold) < 1e-15);
+  const auto barrier_at = [&](const Mesh& m, double q0) {
+    const Indexed x(m);
+    return CF::Sliver_barrier(x.hinges, x.X, 7, q0).value(x.X);
+  };
+  CHECK(barrier_at(needle(5.9), q6) > 0 && barrier_at(needle(6.1), q6) == 0);
+  for(double second : {10., 45., 87., 170.})
+  {
+    // A triangle of angles 5.9, `second` and the rest, from an edge of length 1.
+    const double a = 5.9 * CGAL_PI / 180, b = second * CGAL_PI / 180;
+    const double t = std::sin(b) / std::sin(a + b); // the side at the first angle, by the sine rule
+    Mesh m;
+    m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)),
+               m.add_vertex(Point(t * std::cos(a), t * std::sin(a), 0)));
+    CHECK(barrier_at(m, q6) > 0);
+  }
   CHECK(barrier(needle(1), 0) == 0);
   // A triangle of zero area in the input is left out, whatever it becomes.
   const Mesh flat = needle(0);

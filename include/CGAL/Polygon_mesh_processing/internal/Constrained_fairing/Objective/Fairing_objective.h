@@ -41,9 +41,11 @@ namespace Constrained_fairing {
 class Fairing_objective
 {
 public:
-  // `sliver_weight`: the weight of the barrier against slivers, 0 for none.
-  Fairing_objective(const Hinge_mesh& mesh, const Points& X0, double sliver_weight)
-    : m_mesh(mesh), m_bending(mesh, X0), m_barrier(mesh, X0, sliver_weight)
+  // `sliver_weight`: the weight of the barrier against slivers, 0 for none; `sliver_threshold`
+  // the quality under which a triangle is a sliver.
+  Fairing_objective(const Hinge_mesh& mesh, const Points& X0, double sliver_weight,
+                    double sliver_threshold = Sliver_barrier::default_threshold)
+    : m_mesh(mesh), m_bending(mesh, X0), m_barrier(mesh, X0, sliver_weight, sliver_threshold)
   {
   }
 

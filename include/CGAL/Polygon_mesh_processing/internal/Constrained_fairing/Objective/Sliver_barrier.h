@@ -37,6 +37,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -51,10 +53,15 @@ class Sliver_barrier
 public:
   // sqrt(3) sin(3 degrees), within 0.2 % the quality of an isosceles needle of apex angle 3
   // degrees.
-  static constexpr double threshold = 0.0906485352754803;
+  static constexpr double default_threshold = 0.0906485352754803;
 
-  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight)
-    : m_mesh(mesh), m_weight(weight), m_unit_scaled(X0)
+  // The threshold q0 of the needles of apex angle `degrees`: for a given smallest angle, the
+  // isosceles needle has the largest quality (q = sqrt(3) / (cot a + cot b + cot c)), so every
+  // triangle with a smaller angle has q < q0.
+  static double threshold_of_angle(double degrees) { return std::sqrt(3.) * std::sin(degrees * CGAL_PI / 180); }
+
+  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight, double threshold = default_threshold)
+    : m_mesh(mesh), m_weight(weight), m_threshold(threshold), m_unit_scaled(X0)
   {
     if(m_weight > 0)
       m_degenerate = degenerate_triangles(mesh, m_unit_scaled(X0));
@@ -83,7 +90,7 @@ private:
         const auto& t = m_mesh.triangles[f];
         const Eigen::Vector3d a = point(X, t[1]) - point(X, t[0]), b = point(X, t[2]) - point(X, t[0]);
         const double S = a.squaredNorm() + b.squaredNorm() + (b - a).squaredNorm();
-        if(12 * a.cross(b).squaredNorm() < threshold * threshold * S * S && !m_degenerate[f])
+        if(12 * a.cross(b).squaredNorm() < m_threshold * m_threshold * S * S && !m_degenerate[f])
           slivers.push_back(static_cast<Index>(f));
       }
     });
@@ -91,7 +98,7 @@ private:
     for(const std::vector<Index>& slivers : m_slivers)
       for(Index f : slivers)
       {
-        const double q = quality(X, f), shifted = q + threshold / 100, r = threshold / shifted;
+        const double q = quality(X, f), shifted = q + m_threshold / 100, r = m_threshold / shifted;
         sum += m_weight * (r - 1) * (r - 1);
         if(G)
           add_triangle_gradient(X, f, 2 * m_weight * (r - 1), -r / shifted, *G, scales);
@@ -138,6 +145,7 @@ private:
 
   const Hinge_mesh& m_mesh;
   double m_weight; // nu
+  double m_threshold; // q0
   Unit_scaled_points m_unit_scaled;
   std::vector<bool> m_degenerate; // in the input, when the weight is not 0
   std::vector<std::vector<Index> > m_slivers; // per block of triangles
