@@ -8,9 +8,10 @@ K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy a
 - `read_mesh` and `write_mesh` read and write OFF, OBJ, PLY and STL files;
 - `label_surfaces` makes a label map's surfaces, one closed surface per label with the interfaces
   shared exactly, faired together within their voxels; `fair_interfaces` fairs such a
-  multi-label triangle soup;
-- `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files on a Dask cluster,
-  also from the command line: ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.
+  multi-label triangle soup; `read_label_map` reads a label map from a NIfTI or .npy file;
+- `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files, meshes and label
+  maps, on a Dask cluster, also from the command line:
+  ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.
 
 Example
 -------
@@ -23,6 +24,7 @@ Example
 from ._errors import Defect, InputError
 from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length, set_max_threads
 from ._io import read_mesh, write_mesh
+from ._label_map_files import read_label_map
 from ._labels import LabelSurfaces, fair_interfaces, label_surfaces
 from ._report import Report, Status
 
@@ -31,7 +33,7 @@ __version__ = "0.1.0"
 __all__ = [
     "Defect", "InputError", "LabelSurfaces", "Report", "Status", "estimate_noise_level", "fair",
     "fair_files", "fair_interfaces", "label_surfaces", "max_threads", "mean_edge_length",
-    "read_mesh", "set_max_threads", "write_mesh",
+    "read_label_map", "read_mesh", "set_max_threads", "write_mesh",
 ]
 
 

@@ -57,6 +57,7 @@ class LabelSurfaces:
 
 def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
                    origin: Sequence[float] = (0, 0, 0), *,
+                   affine: Optional[ArrayLike] = None,
                    fair: bool = True,
                    background: int = 0,
                    labels_to_mesh: Optional[Sequence[int]] = None,
@@ -82,6 +83,14 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
         The distance between voxel centres along each axis, positive (NIfTI's ``pixdim``).
     origin : sequence of 3 floats
         The centre of voxel ``[0, 0, 0]``.
+    affine : array_like, shape (4, 4), optional
+        Instead of `spacing` and `origin`: the map from voxel indices to world coordinates
+        (a NIfTI image's ``affine``, as `read_label_map` returns it), which may also rotate and
+        mirror the axes. The surfaces are computed and faired in the voxels' own frame (spacing
+        the lengths of the affine's columns) and then moved into the world, so that each point
+        stays in its voxel; where the affine mirrors, the faces are turned so that normals still
+        point from ``face_labels[f, 0]`` into ``face_labels[f, 1]``. A sheared affine is applied
+        as it is, after the fairing.
     fair : bool
         Fair the surfaces (default); ``False`` returns the surface nets.
     background : int
@@ -105,14 +114,31 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     ------
     InputError
         (a ValueError) `labels` not 3-D or not integers, `spacing` not positive and finite,
-        `origin` not finite (``INVALID_ARGUMENT``); a map with nothing but background
-        (``NO_FACES``).
+        `origin` not finite, `affine` not a finite (4, 4) array whose first three columns are
+        independent, or given with `spacing` or `origin` (``INVALID_ARGUMENT``); a map with
+        nothing but background (``NO_FACES``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import cgal_constrained_fairing as cf
+    >>> labels = np.zeros((20, 20, 20), np.uint8)
+    >>> labels[5:15, 5:15, 5:15] = 1
+    >>> labels[5:15, 5:15, 10:15] = 2
+    >>> r = cf.label_surfaces(labels, spacing=(0.5, 0.5, 1.5))
+    >>> V, F = r.surface(2)     # closed and outward, sharing its points with label 1's
     """
     L = np.asarray(labels)
     if L.ndim != 3:
         raise invalid(f"labels must be a 3-D array (got {L.ndim} dimensions)")
     if L.dtype.kind not in "iu":
         raise invalid(f"labels must have an integer dtype (got {L.dtype})")
+    frame = None
+    if affine is not None:
+        if tuple(spacing) != (1, 1, 1) or tuple(origin) != (0, 0, 0):
+            raise invalid("give either affine, or spacing and origin")
+        frame = _Frame(affine)
+        spacing = frame.spacing
     h = numbers_array(spacing, "spacing", [(3,)])
     o = numbers_array(origin, "origin", [(3,)])
     if not (np.isfinite(h).all() and (h > 0).all()):
@@ -133,7 +159,32 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
         cap = float(np.linalg.norm(h)) if epsilon is None else epsilon
         W, report = fair_interfaces(V, F, FL, cap, box_half_extents=h / 2, objective=objective,
                                     max_iterations=max_iterations, progress=progress)
+    if frame is not None:
+        W, V, F = frame.to_world(W), frame.to_world(V), frame.faces(F)
     return LabelSurfaces(W, F, FL, V, report, present)
+
+
+class _Frame:
+    """An affine split into the voxels' spacing and the rigid move (or mirror) into the world."""
+
+    def __init__(self, affine):
+        A = numbers_array(affine, "affine", [(4, 4)])
+        if not np.isfinite(A).all():
+            raise invalid("affine must be finite")
+        self.spacing = np.linalg.norm(A[:3, :3], axis=0)
+        volume = abs(np.linalg.det(A[:3, :3]))
+        if not (self.spacing > 0).all() or volume <= 1e-12 * self.spacing.prod():
+            raise invalid(f"affine must map the voxel axes to independent directions (got "
+                          f"{A[:3, :3].tolist()})")
+        self.axes = A[:3, :3] / self.spacing
+        self.translation = A[:3, 3].copy()
+        self.mirrors = np.linalg.det(self.axes) < 0
+
+    def to_world(self, points: np.ndarray) -> np.ndarray:
+        return points @ self.axes.T + self.translation
+
+    def faces(self, faces: np.ndarray) -> np.ndarray:
+        return np.ascontiguousarray(faces[:, [0, 2, 1]]) if self.mirrors else faces
 
 
 def fair_interfaces(vertices: ArrayLike, faces: ArrayLike, face_labels: ArrayLike,

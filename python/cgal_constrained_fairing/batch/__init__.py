@@ -2,8 +2,10 @@
 
 `fair_files` fairs each file in a task of its own, writes each result into an output folder
 under the input's file name (same format), and keeps a table of what was done in
-``OUT_DIR/report.csv``. A file that cannot be read or is rejected gets its error in the table
-and the batch goes on; a second run skips the files already done and retries the others.
+``OUT_DIR/report.csv``. Label maps (NIfTI ``.nii``, ``.nii.gz`` and ``.npy``) give one closed
+surface per label, faired together within their voxels, in a folder named after the map. A
+file that cannot be read or is rejected gets its error in the table and the batch goes on; a
+second run skips the files already done and retries the others.
 
 On this machine, one worker process per core::
 
@@ -52,21 +54,27 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
                threads: Optional[int] = None,
                force: bool = False,
                progress: Optional[bool] = None,
+               label_format: str = "ply",
                **fair_options: Any) -> List[Row]:
-    """Fair mesh files on a Dask cluster, one task per file, and report what was done.
+    """Fair mesh files and label maps on a Dask cluster, one task per file; report what was done.
 
-    Each file is read with `read_mesh`, faired with `fair` and written to
+    Each mesh file is read with `read_mesh`, faired with `fair` and written to
     ``out_dir / <its file name>`` (same format) through a temporary file, so that an output
-    file is always complete. The report ``out_dir/report.csv`` is rewritten after each file,
-    so that an interrupted batch leaves the table of what it did. Files whose output exists
+    file is always complete. Each label map (``.nii``, ``.nii.gz``, ``.npy``) is read with
+    `read_label_map`, its surfaces made and faired together within their voxels with
+    `label_surfaces` (its affine applied: the surfaces are in world coordinates), and each
+    label's closed surface written to ``out_dir / <its name> / label_<L>.<label_format>``; the
+    folder appears complete or not at all. The report ``out_dir/report.csv`` is rewritten
+    after each file, so that an interrupted batch leaves the table of what it did. Files whose output exists
     are skipped, whatever options made it: running the same batch again finishes it, and
     `force` redoes everything.
 
     Parameters
     ----------
     paths : sequence of str or os.PathLike
-        The mesh files (OFF, OBJ, PLY or STL, by extension); their file names must differ.
-        Relative paths are taken from the current directory.
+        The mesh files (OFF, OBJ, PLY or STL) and label maps (NIfTI ``.nii``, ``.nii.gz``,
+        numpy ``.npy``), by extension; their outputs' names must differ. Relative paths are
+        taken from the current directory.
     out_dir : str or os.PathLike
         The output folder, created if missing; it must not hold an input (outputs would
         overwrite inputs).
@@ -78,7 +86,7 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         The tolerance of each file: ``"<x>h"`` for x times its `mean_edge_length`,
         ``"auto"`` for its `estimate_noise_level`, or a number (or numeric string) in the
         meshes' units; the command-line tool's ``--eps`` reads the same texts (default
-        ``"0.25h"``).
+        ``"0.25h"``). Label maps are bounded by their voxels instead.
     workers : int, optional
         The worker processes of the local cluster: default, and at most, one per core (and
         no more than files to fair). Only without `client`.
@@ -91,9 +99,13 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     progress : bool, optional
         Show a progress bar (tqdm) on stderr. Default: when stderr is a terminal and tqdm
         is installed.
+    label_format : {"ply", "off", "obj", "stl"}
+        The format of the labels' surfaces.
     **fair_options
-        Passed to `fair` unchanged for every file, e.g. ``objective="accurate"``
-        (`progress` is the batch's own; `fair`'s progress is not available here).
+        Passed to `fair` unchanged for every mesh file, e.g. ``objective="accurate"``
+        (`progress` is the batch's own; `fair`'s progress is not available here); with label
+        maps among the inputs, only ``objective`` and ``max_iterations``, which
+        `label_surfaces` takes too.
 
     Returns
     -------
@@ -105,13 +117,17 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         `InputError`, ``"TypeName: message"`` otherwise) or ``"skipped"``; a skipped file
         whose row the previous report holds keeps that row (but a previous error is not kept:
         the file's output exists, so it shows as ``"skipped"``). ``seconds`` is the wall time
-        of the file's task (read, fair, write) and ``worker`` the address of its worker.
+        of the file's task (read, fair, write) and ``worker`` the address of its worker. For a
+        label map, ``vertices`` and ``faces`` count its multi-label surface (each point and
+        triangle once), ``labels`` the surfaces written, ``output`` is their folder and
+        ``epsilon`` is missing.
 
     Raises
     ------
     ValueError
-        Before anything is started or written: two inputs with the same file name, an output
-        that would overwrite its input, a bad `eps` or `workers`, or `workers` with `client`.
+        Before anything is started or written: two inputs with the same output name, an
+        output that would overwrite its input, a bad `eps`, `workers` or `label_format`,
+        `workers` with `client`, or label maps with options they do not take.
     TypeError
         An option that `fair` does not take.
     ImportError
@@ -124,7 +140,7 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     >>> [row["status"] for row in rows]                                 # doctest: +SKIP
     ['converged', 'converged']
     """
-    batch = Batch(paths, out_dir, eps, force, fair_options)
+    batch = Batch(paths, out_dir, eps, force, fair_options, label_format)
     if client is not None and workers is not None:
         raise ValueError("workers applies to the local cluster only; not with a client")
     cores = available_cores()

@@ -29,16 +29,21 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(
         prog="python3 -m cgal_constrained_fairing.batch",
         description="Fair mesh files (OFF, OBJ, PLY, STL) on a Dask cluster, each within "
-                    "epsilon of its input. Outputs go to OUT_DIR under the inputs' file names, "
-                    "with a table of what was done in OUT_DIR/report.csv; files already done "
-                    "are skipped.")
-    parser.add_argument("inputs", nargs="+", metavar="IN", help="mesh files")
+                    "epsilon of its input, and label maps (NIfTI .nii, .nii.gz, numpy .npy) "
+                    "into one closed surface per label, faired together within their voxels. "
+                    "Meshes go to OUT_DIR under the inputs' file names, a label map's surfaces "
+                    "to OUT_DIR/<its name>/label_<L>.<format> in world coordinates, with a "
+                    "table of what was done in OUT_DIR/report.csv; files already done are "
+                    "skipped.")
+    parser.add_argument("inputs", nargs="+", metavar="IN", help="mesh files and label maps")
     parser.add_argument("-o", "--out-dir", required=True, metavar="OUT_DIR",
                         help="the output folder (created if missing)")
     parser.add_argument("--eps", default=DEFAULT_EPS,
                         help="the tolerance: '<x>h' (x times each mesh's mean edge length), "
                              "'auto' (each mesh's estimated noise level) or a value "
                              f"(default: {DEFAULT_EPS})")
+    parser.add_argument("--label-format", default="ply", choices=("ply", "off", "obj", "stl"),
+                        help="the format of the labels' surfaces (default: ply)")
     parser.add_argument("--accurate", action="store_true",
                         help="fair towards a denoised copy of each input (objective "
                              "'accurate'): closer to the true surface of a noisy scan")
@@ -61,7 +66,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
 
     options = {"objective": "accurate"} if args.accurate else {}
     try:
-        batch = Batch(args.inputs, args.out_dir, args.eps, args.force, options)
+        batch = Batch(args.inputs, args.out_dir, args.eps, args.force, options,
+                      args.label_format)
     except ValueError as error:
         parser.error(str(error))
 

@@ -7,13 +7,13 @@ from typing import Any, Dict, Optional, Sequence
 
 COLUMNS = ("path", "vertices", "faces", "epsilon", "status", "error", "iterations",
            "initial_bending_energy", "final_bending_energy", "initial_energy", "final_energy",
-           "max_deviation", "seconds", "worker", "output")
-"""The columns of the report, in order."""
+           "max_deviation", "seconds", "worker", "output", "labels")
+"""The columns of the report, in order (``labels``: the surfaces written from a label map)."""
 
 REPORT_NAME = "report.csv"
 """The report's file name in the output folder."""
 
-_INT_COLUMNS = ("vertices", "faces", "iterations")
+_INT_COLUMNS = ("vertices", "faces", "iterations", "labels")
 _FLOAT_COLUMNS = ("epsilon", "initial_bending_energy", "final_bending_energy", "initial_energy",
                   "final_energy", "max_deviation", "seconds")
 

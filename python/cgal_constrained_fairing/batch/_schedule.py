@@ -2,6 +2,7 @@
 
 import inspect
 import os
+import shutil
 import time
 import uuid
 from pathlib import Path
@@ -9,7 +10,9 @@ from typing import Any, Dict, List, Optional, Tuple
 
 from .._errors import InputError
 from .._fairing import fair, set_max_threads
-from .._io import read_mesh, write_mesh
+from .._io import FORMATS, read_mesh, write_mesh
+from .._label_map_files import label_map_stem, read_label_map
+from .._labels import label_surfaces
 from ._epsilon import mesh_epsilon, parse_eps
 from ._progress import Bar
 from ._report_file import REPORT_NAME, Row, empty_row, read_report, write_report
@@ -18,7 +21,7 @@ from ._report_file import REPORT_NAME, Row, empty_row, read_report, write_report
 class Batch:
     """A checked batch: its inputs, outputs, options and the rows known before it runs."""
 
-    def __init__(self, paths, out_dir, eps, force, fair_options):
+    def __init__(self, paths, out_dir, eps, force, fair_options, label_format="ply"):
         if isinstance(paths, (str, bytes, os.PathLike)):
             raise TypeError("paths must be a sequence of paths, not a single path")
         self.inputs = [Path(os.path.abspath(os.fspath(p))) for p in paths]
@@ -26,7 +29,11 @@ class Batch:
         self.eps = parse_eps(eps)
         self.force = bool(force)
         self.fair_options = _check_fair_options(fair_options)
-        self.outputs = [self.out_dir / p.name for p in self.inputs]
+        self.label_format = _check_label_format(label_format)
+        # A label map's surfaces go into a folder named after it.
+        self.outputs = [self.out_dir / (label_map_stem(p) or p.name) for p in self.inputs]
+        if any(label_map_stem(p) is not None for p in self.inputs):
+            _check_label_map_options(self.fair_options)
         self.report_path = self.out_dir / REPORT_NAME
         self._check_names()
         self.rows: List[Optional[Row]] = [None] * len(self.inputs)
@@ -36,11 +43,12 @@ class Batch:
     def _check_names(self):
         seen = {}
         for path, output in zip(self.inputs, self.outputs):
-            if path.name in seen:
-                raise ValueError(f"two inputs have the file name {path.name!r} ({seen[path.name]} "
-                                 f"and {path}): their outputs would be the same file")
-            seen[path.name] = path
-            if path.name == REPORT_NAME:
+            if output.name in seen:
+                raise ValueError(f"two inputs have the output file name {output.name!r} "
+                                 f"({seen[output.name]} and {path}): their outputs would be the "
+                                 "same file")
+            seen[output.name] = path
+            if output.name == REPORT_NAME:
                 raise ValueError(f"{path}: an input named {REPORT_NAME} would overwrite the "
                                  "report")
             if _same_file(path, output):
@@ -97,8 +105,13 @@ class Batch:
         # while another finishes.
         for index in sorted(self.todo, key=lambda i: -_size(self.inputs[i])):
             key = f"fair_file-{self.inputs[index].name}-{token}-{index}"
-            future = client.submit(_fair_file, str(self.inputs[index]), str(self.outputs[index]),
-                                   self.eps, self.fair_options, threads, key=key, pure=False)
+            path, output = str(self.inputs[index]), str(self.outputs[index])
+            if label_map_stem(path) is None:
+                future = client.submit(_fair_file, path, output, self.eps, self.fair_options,
+                                       threads, key=key, pure=False)
+            else:
+                future = client.submit(_fair_label_map, path, output, self.label_format,
+                                       self.fair_options, threads, key=key, pure=False)
             futures[future] = index
         bar = Bar(len(self.inputs), len(self.skipped)) if show_progress else None
         try:
@@ -178,6 +191,45 @@ def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dic
     return row
 
 
+def _fair_label_map(path: str, output: str, label_format: str, fair_options: Dict[str, Any],
+                    threads: int) -> Row:
+    """The task of one label map, run in a worker: its labels' surfaces, faired together within
+    their voxels, each written in world coordinates to ``output/label_<L>.<format>``; the
+    folder is renamed into place once complete. Never raises."""
+    start = time.perf_counter()
+    row = empty_row(path)
+    row["worker"] = _worker_address()
+    partial = None
+    try:
+        set_max_threads(threads)
+        labels, affine = read_label_map(path)
+        result = label_surfaces(labels, affine=affine, **fair_options)
+        row.update(vertices=int(result.vertices.shape[0]), faces=int(result.faces.shape[0]),
+                   labels=int(result.labels.size))
+        partial = os.path.join(os.path.dirname(output), f".{os.path.basename(output)}.partial")
+        shutil.rmtree(partial, ignore_errors=True)
+        os.makedirs(partial)
+        for label in result.labels.tolist():
+            surface = os.path.join(partial, f"label_{label}.{label_format}")
+            write_mesh(surface, *result.surface(label))
+        shutil.rmtree(output, ignore_errors=True)  # an earlier output, with force
+        os.replace(partial, output)
+        partial = None
+        report = result.report
+        row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
+                   initial_bending_energy=report.initial_bending_energy,
+                   final_bending_energy=report.final_bending_energy,
+                   initial_energy=report.initial_energy, final_energy=report.final_energy,
+                   max_deviation=report.max_deviation, output=output)
+    except Exception as error:
+        row.update(status="error", error=_describe(error))
+    finally:
+        if partial is not None:
+            shutil.rmtree(partial, ignore_errors=True)
+    row["seconds"] = time.perf_counter() - start
+    return row
+
+
 def _describe(error: BaseException) -> str:
     if isinstance(error, InputError):
         return f"{error.defect.value}: {error.message}"
@@ -200,6 +252,24 @@ def _check_fair_options(options: Dict[str, Any]) -> Dict[str, Any]:
             raise TypeError(f"fair_files() got an option that fair() does not take in a batch: "
                             f"{name!r}")
     return dict(options)
+
+
+# The options of `fair` that a label map's fairing takes too (`label_surfaces`).
+_LABEL_MAP_OPTIONS = ("objective", "max_iterations")
+
+
+def _check_label_map_options(options: Dict[str, Any]) -> None:
+    other = sorted(set(options) - set(_LABEL_MAP_OPTIONS))
+    if other:
+        raise ValueError(f"options that label maps do not take: {', '.join(other)} (label maps "
+                         f"take {', '.join(_LABEL_MAP_OPTIONS)})")
+
+
+def _check_label_format(label_format: str) -> str:
+    formats = [f[1:] for f in FORMATS]
+    if not isinstance(label_format, str) or label_format.lower().lstrip(".") not in formats:
+        raise ValueError(f"label_format must be one of {', '.join(formats)} (got {label_format!r})")
+    return label_format.lower().lstrip(".")
 
 
 def _size(path: Path) -> int:

@@ -1,0 +1,188 @@
+"""Label map files: `read_label_map`, `label_surfaces` with an affine, and the batch on them."""
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import cgal_constrained_fairing as cf
+
+nibabel = pytest.importorskip("nibabel")
+
+
+def two_labels(shape=(14, 12, 10)):
+    """A box of label 3 with a slab of label 7 on its top; int16, as segmentations often are."""
+    labels = np.zeros(shape, np.int16)
+    labels[3:11, 3:9, 2:8] = 3
+    labels[3:11, 3:9, 6:8] = 7
+    return labels
+
+
+# Voxel axes rotated by 30 degrees about z, mirrored in x, spacings 0.8, 0.8, 2.5 and an origin.
+ANGLE = np.radians(30)
+ROTATION = np.array([[np.cos(ANGLE), -np.sin(ANGLE), 0],
+                     [np.sin(ANGLE), np.cos(ANGLE), 0],
+                     [0, 0, 1]])
+AFFINE = np.eye(4)
+AFFINE[:3, :3] = ROTATION @ np.diag([-1, 1, 1]) @ np.diag([0.8, 0.8, 2.5])
+AFFINE[:3, 3] = [10, -20, 5]
+
+
+def save_nifti(path, labels, affine):
+    image = nibabel.Nifti1Image(labels, affine)
+    image.set_sform(affine, code=1)
+    image.set_qform(affine, code=1)
+    nibabel.save(image, str(path))
+
+
+def volume(V, F):
+    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    return np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
+
+
+def is_closed(F):
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    return bool((counts % 2 == 0).all())
+
+
+@pytest.mark.parametrize("name", ["map.nii", "map.nii.gz", "map.npy"])
+def test_read_label_map(tmp_path, name):
+    labels = two_labels()
+    path = tmp_path / name
+    if name.endswith(".npy"):
+        np.save(path, labels)
+        affine = np.eye(4)
+    else:
+        save_nifti(path, labels, AFFINE)
+        affine = AFFINE
+    read, read_affine = cf.read_label_map(path)
+    assert read.dtype.kind in "iu" and np.array_equal(read, labels)
+    assert np.allclose(read_affine, affine, atol=1e-6)
+
+
+def test_read_label_map_takes_whole_floats_and_refuses_the_rest(tmp_path):
+    labels = two_labels().astype(np.float32)
+    save_nifti(tmp_path / "float.nii.gz", labels, np.eye(4))
+    read, _ = cf.read_label_map(tmp_path / "float.nii.gz")
+    assert read.dtype.kind == "i" and np.array_equal(read, labels)
+    labels[5, 5, 5] = 0.5
+    save_nifti(tmp_path / "fraction.nii.gz", labels, np.eye(4))
+    with pytest.raises(ValueError, match="whole numbers"):
+        cf.read_label_map(tmp_path / "fraction.nii.gz")
+    np.save(tmp_path / "flat.npy", np.zeros((4, 4), np.uint8))
+    with pytest.raises(ValueError, match="3-D"):
+        cf.read_label_map(tmp_path / "flat.npy")
+    (tmp_path / "broken.nii.gz").write_bytes(b"not gzip at all")
+    with pytest.raises(ValueError, match="not a valid NIfTI file"):
+        cf.read_label_map(tmp_path / "broken.nii.gz")
+    (tmp_path / "labels.txt").write_text("1 2 3")
+    with pytest.raises(ValueError, match="label map must be"):
+        cf.read_label_map(tmp_path / "labels.txt")
+    with pytest.raises(FileNotFoundError):
+        cf.read_label_map(tmp_path / "missing.nii")
+
+
+def test_label_surfaces_in_world_coordinates():
+    labels = two_labels()
+    spacing = np.linalg.norm(AFFINE[:3, :3], axis=0)
+    local = cf.label_surfaces(labels, spacing=spacing)
+    world = cf.label_surfaces(labels, affine=AFFINE)
+    axes = AFFINE[:3, :3] / spacing
+    # The same fairing, moved into the world; the mirror turns the faces.
+    assert np.allclose(world.vertices, local.vertices @ axes.T + AFFINE[:3, 3], rtol=0, atol=1e-12)
+    assert np.array_equal(world.faces, local.faces[:, [0, 2, 1]])
+    assert np.array_equal(world.face_labels, local.face_labels)
+    # Each point in its voxel box: back in voxel units, within half a voxel of its net point.
+    inverse = np.linalg.inv(AFFINE)
+    to_voxels = lambda P: P @ inverse[:3, :3].T + inverse[:3, 3]  # noqa: E731
+    moved = to_voxels(world.vertices) - to_voxels(world.unfaired_vertices)
+    assert np.abs(moved).max() <= 0.5 + 1e-9
+    for label in (3, 7):
+        V, F = world.surface(label)
+        assert is_closed(F) and volume(V, F) > 0
+    # A rigid move keeps the volumes.
+    for label in (3, 7):
+        before = volume(*local.surface(label))
+        assert abs(volume(*world.surface(label)) - before) < 1e-9 * before
+
+
+@pytest.mark.parametrize("affine, message", [
+    (np.zeros((4, 4)), "independent"),
+    (np.full((4, 4), np.nan), "finite"),
+    (np.eye(3), "affine"),
+])
+def test_bad_affines(affine, message):
+    with pytest.raises(cf.InputError, match=message) as error:
+        cf.label_surfaces(two_labels(), affine=affine)
+    assert error.value.defect == cf.Defect.INVALID_ARGUMENT
+    with pytest.raises(cf.InputError, match="either affine"):
+        cf.label_surfaces(two_labels(), spacing=(1, 1, 2), affine=np.eye(4))
+
+
+distributed = pytest.importorskip("distributed")
+
+
+@pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+def test_batch_writes_one_surface_per_label_in_world_coordinates(tmp_path):
+    from cgal_constrained_fairing.batch import fair_files
+    inputs = tmp_path / "in"
+    inputs.mkdir()
+    labels = two_labels()
+    save_nifti(inputs / "scan.nii.gz", labels, AFFINE)
+    np.save(inputs / "grains.npy", labels.astype(np.uint32))
+    (inputs / "broken.nii").write_bytes(b"\0" * 400)
+    out = tmp_path / "out"
+    rows = fair_files([inputs / "scan.nii.gz", inputs / "grains.npy", inputs / "broken.nii"], out,
+                      workers=2, label_format="off")
+    assert [row["status"] for row in rows[:2]] == ["converged", "converged"]
+    assert rows[2]["status"] == "error" and "broken.nii" in rows[2]["error"]
+    assert not (out / "broken").exists()
+    for row, name, path in ((rows[0], "scan", "scan.nii.gz"), (rows[1], "grains", "grains.npy")):
+        assert row["labels"] == 2 and row["output"] == str(out / name) and row["epsilon"] is None
+        # NIfTI-1 stores the affine in float32: the one read back is the map's.
+        read, affine = cf.read_label_map(inputs / path)
+        expected = cf.label_surfaces(read, affine=affine)
+        assert row["vertices"] == len(expected.vertices) and row["faces"] == len(expected.faces)
+        assert sorted(os.listdir(out / name)) == ["label_3.off", "label_7.off"]
+        for label in (3, 7):
+            V, F = cf.read_mesh(out / name / f"label_{label}.off")
+            W, G = expected.surface(label)
+            assert np.array_equal(V, W) and np.array_equal(F, G)
+            assert is_closed(F) and volume(V, F) > 0
+    # Run again: the maps done are skipped (their rows kept as they were), the broken one is
+    # tried again.
+    written = os.stat(out / "scan" / "label_3.off").st_mtime_ns
+    again = fair_files([inputs / "scan.nii.gz", inputs / "grains.npy", inputs / "broken.nii"], out,
+                       workers=1)
+    assert again[:2] == rows[:2] and again[2]["status"] == "error"
+    assert os.stat(out / "scan" / "label_3.off").st_mtime_ns == written
+
+
+def test_batch_refuses_what_label_maps_do_not_take(tmp_path):
+    from cgal_constrained_fairing.batch import fair_files
+    np.save(tmp_path / "a.npy", two_labels())
+    with pytest.raises(ValueError, match="label maps do not take: fidelity_weight"):
+        fair_files([tmp_path / "a.npy"], tmp_path / "out", fidelity_weight=10.0)
+    save_nifti(tmp_path / "a.nii", two_labels(), np.eye(4))
+    with pytest.raises(ValueError, match="output file name 'a'"):
+        fair_files([tmp_path / "a.npy", tmp_path / "a.nii"], tmp_path / "out")
+    with pytest.raises(ValueError, match="label_format"):
+        fair_files([tmp_path / "a.npy"], tmp_path / "out", label_format="vtk")
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+def test_batch_command_line_on_a_label_map(tmp_path):
+    save_nifti(tmp_path / "seg.nii.gz", two_labels(), AFFINE)
+    done = subprocess.run([sys.executable, "-m", "cgal_constrained_fairing.batch",
+                           str(tmp_path / "seg.nii.gz"), "-o", str(tmp_path / "out"),
+                           "--workers", "1"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "1 faired, 0 skipped, 0 failed" in done.stdout
+    assert sorted(os.listdir(tmp_path / "out" / "seg")) == ["label_3.ply", "label_7.ply"]
+    assert Path(tmp_path / "out" / "report.csv").read_text().splitlines()[0].endswith(",labels")
