@@ -200,6 +200,40 @@ def main():
     draw(axes[1], pv, fs, np.zeros(len(pv)), "Greys", -1, 1, side, "faired within each voxel")
     save(fig, "voxels.png")
 
+    label_map_figure(build)
+
+
+def label_map_figure(build):
+    """A ball of 1 x 1 x 2 voxels cut by a tilted plane into labels 1 and 2, with a cap of
+    label 3: the surfaces of labels 1 and 3 (label 2 left out, to show the interfaces), coloured
+    by label, from the surface nets and after fairing them together."""
+    sys.path.insert(0, os.path.join(build, "python"))
+    import cgal_constrained_fairing as cf
+    spacing = np.array([1.0, 1.0, 2.0])
+    shape = (40, 40, 20)
+    i, j, k = np.indices(shape)
+    x, y, z = i * spacing[0] - 19.5, j * spacing[1] - 19.5, k * spacing[2] - 19.5
+    labels = np.zeros(shape, np.uint8)
+    inside = x * x + y * y + z * z < 16.5 ** 2
+    labels[inside] = np.where(x[inside] < 0.3 * z[inside], 1, 2)
+    labels[inside & (z > 9)] = 3
+    raw = cf.label_surfaces(labels, spacing, fair=False)
+    faired = cf.label_surfaces(labels, spacing)
+    print("label map figure:", faired.report)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 5))
+    angle = view(-35, 20) @ np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]])  # z up
+    for ax, result, title in ((axes[0], raw, "surface nets, 1 x 1 x 2 voxels"),
+                              (axes[1], faired, "faired together, each point in its voxel")):
+        points, faces, values = [], [], []
+        for label in (1, 3):
+            V, F = result.surface(label)
+            faces.append(F + sum(len(p) for p in points))
+            points.append(V)
+            values.append(np.full(len(V), label))
+        draw(ax, np.concatenate(points), np.concatenate(faces), np.concatenate(values), "tab10",
+             0, 10, angle, title)
+    save(fig, "label_map.png")
+
 
 if __name__ == "__main__":
     main()

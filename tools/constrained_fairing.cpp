@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The command-line tool: fairs a mesh file while keeping every vertex within epsilon of its
-// input position.
+// input position, or makes a NIfTI-1 label map's surfaces, one closed surface per label, faired
+// together within their voxels.
 //
 //   constrained_fairing [OPTIONS] IN [OUT]
 //
@@ -13,9 +14,14 @@
 // OUT once complete.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
+#include <CGAL/Polygon_mesh_processing/label_surface.h>
+#include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include "front_end/Epsilon_grammar.h"
+#include "front_end/Label_map_file.h"
 #include "front_end/Mean_edge_length.h"
 #include "front_end/Mesh_file.h"
 
@@ -35,6 +41,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,6 +66,13 @@ input position (Hildebrandt and Polthier, SGP 2007).
         also gets each vertex's distance to its input position (vertex property "deviation")
         and whether it ended on its bound ("at_bound", 0 or 1)
 
+  A NIfTI-1 label map IN (.nii or .nii.gz: a segmentation, one integer label per voxel, 0 the
+  background) gives one closed surface per label, its interfaces shared exactly with its
+  neighbours', faired together with every point within its voxel, in world coordinates (the
+  file's sform, else its qform, else its voxel sizes). OUT is then a folder, default IN's name
+  with _surfaces in the current folder, which gets label_<L>.ply for each label L (see
+  --label-format); of the options, only --accurate applies.
+
 options:
   --eps EPS                the tolerance: absolute (0.002), relative to the mean edge length h
                            (0.25h), or auto, the noise level estimated from the mesh itself; it
@@ -74,6 +88,7 @@ options:
   --fixed-border           vertices on the mesh's border do not move
   --accurate               the accurate objective: closer to the true surface of a noisy scan,
                            a little less fair; not for surfaces extracted from volumes
+  --label-format EXT       a label map's surfaces as ply (default), off, obj or stl
   --help                   this text
 )";
 
@@ -143,6 +158,7 @@ struct Options
   bool box = false, fixed_border = false, accurate = false, help = false;
   std::optional<std::string> eps;
   std::string extents, radius_property, error;
+  std::optional<std::string> label_format;
 };
 
 Options parse_options(int argc, char* argv[])
@@ -171,6 +187,8 @@ Options parse_options(int argc, char* argv[])
       value(o.extents);
     else if(a == "--radius-from-property")
       value(o.radius_property);
+    else if(a == "--label-format")
+      value(o.label_format.emplace());
     else if(a.size() > 2 && a.compare(0, 2, "--") == 0)
       o.error = "unknown option " + a + " (see --help)";
     else
@@ -277,6 +295,116 @@ PMP::Constrained_fairing_result fair_with_tolerance(Mesh& mesh, double epsilon, 
   return fair_with_fixed(mesh, epsilon, asked, np);
 }
 
+// A label map's surfaces: surface nets in the voxels' frame (spacing the lengths of the
+// affine's columns), faired together within the voxel boxes, each label's surface moved into
+// the world (turned where the affine mirrors, so that it stays outward) and written into a
+// temporary folder renamed to `out` once complete.
+int fair_label_map(const Options& options, const std::string& in)
+{
+  namespace FE = Constrained_fairing_front_end;
+  if(options.eps || options.box || !options.extents.empty() || !options.radius_property.empty() ||
+     options.fixed_border)
+    return fail("of the options, only --accurate and --label-format apply to a label map");
+  const std::string format = options.label_format.value_or("ply");
+  if(format != "ply" && format != "off" && format != "obj" && format != "stl")
+    return fail("--label-format must be ply, off, obj or stl (got " + format + ")");
+  std::string name = std::filesystem::path(in).filename().string();
+  name = name.substr(0, name.size() - (name.size() > 3 && name.compare(name.size() - 3, 3, ".gz") == 0 ? 7 : 4));
+  const std::filesystem::path out =
+    options.positional.size() > 1 ? std::filesystem::path(options.positional[1]) : std::filesystem::path(name + "_surfaces");
+  const std::filesystem::path parent = std::filesystem::absolute(out).parent_path();
+  if(!std::filesystem::is_directory(parent))
+    return fail("cannot write " + out.string() + " (no folder " + parent.string() + ")");
+
+  FE::Label_map map;
+  const std::string read_error = FE::read_label_map(in, map);
+  if(!read_error.empty())
+    return fail(read_error);
+  std::array<double, 3> spacing;
+  double axes[3][3];
+  for(std::size_t c = 0; c < 3; ++c)
+  {
+    spacing[c] = std::sqrt(map.affine[0][c] * map.affine[0][c] + map.affine[1][c] * map.affine[1][c] +
+                           map.affine[2][c] * map.affine[2][c]);
+    if(!(spacing[c] > 0) || !std::isfinite(spacing[c]))
+      return fail(in + ": its affine maps voxel axis " + std::to_string(c) + " to no direction");
+    for(std::size_t r = 0; r < 3; ++r)
+      axes[r][c] = map.affine[r][c] / spacing[c];
+  }
+  const double determinant = axes[0][0] * (axes[1][1] * axes[2][2] - axes[1][2] * axes[2][1]) -
+                             axes[0][1] * (axes[1][0] * axes[2][2] - axes[1][2] * axes[2][0]) +
+                             axes[0][2] * (axes[1][0] * axes[2][1] - axes[1][1] * axes[2][0]);
+  if(!(std::abs(determinant) > 1e-12))
+    return fail(in + ": its affine maps the voxel axes to dependent directions");
+
+  std::vector<K::Point_3> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::array<std::int64_t, 2> > face_labels;
+  PMP::label_surface_nets(map.labels.data(), map.size, spacing, {0, 0, 0}, points, triangles, face_labels);
+  if(triangles.empty())
+    return fail(in + ": the label map holds nothing but the background label 0; nothing written");
+  Progress progress;
+  const std::array<double, 3> half{spacing[0] / 2, spacing[1] / 2, spacing[2] / 2};
+  const PMP::Constrained_fairing_result result = PMP::constrained_fairing_of_interfaces(
+    points, triangles, face_labels, std::sqrt(spacing[0] * spacing[0] + spacing[1] * spacing[1] + spacing[2] * spacing[2]),
+    CFP::box_half_extents(half, CFP::iteration_callback(
+                                  std::ref(progress),
+                                  CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
+                                                                          : PMP::Constrained_fairing_objective::FAIREST))));
+  progress.done();
+  if(!result)
+    return fail(result.message + "; nothing written");
+
+  std::set<std::int64_t> labels;
+  for(const auto& pair : face_labels)
+    for(std::int64_t l : pair)
+      if(l != 0)
+        labels.insert(l);
+  std::filesystem::path partial = out;
+  partial.replace_filename("." + out.filename().string() + ".partial");
+  std::error_code ignored;
+  std::filesystem::remove_all(partial, ignored);
+  std::filesystem::create_directory(partial, ignored);
+  for(std::int64_t label : labels)
+  {
+    Mesh mesh;
+    PMP::label_surface(points, triangles, face_labels, label, mesh);
+    for(vertex_descriptor v : vertices(mesh))
+    {
+      const K::Point_3& p = mesh.point(v);
+      double w[3];
+      for(std::size_t r = 0; r < 3; ++r)
+        w[r] = axes[r][0] * p.x() + axes[r][1] * p.y() + axes[r][2] * p.z() + map.affine[r][3];
+      mesh.point(v) = K::Point_3(w[0], w[1], w[2]);
+    }
+    if(determinant < 0)
+      PMP::reverse_face_orientations(mesh);
+    const std::string file = (partial / ("label_" + std::to_string(label) + "." + format)).string();
+    if(!CGAL::IO::write_polygon_mesh(file, mesh, CGAL::parameters::stream_precision(17).verbose(false)))
+    {
+      std::filesystem::remove_all(partial, ignored);
+      return fail("cannot write " + file + FE::unwritable_file_reason(file) + "; nothing written");
+    }
+  }
+  std::filesystem::remove_all(out, ignored);
+  std::error_code error;
+  std::filesystem::rename(partial, out, error);
+  if(error)
+  {
+    std::filesystem::remove_all(partial, ignored);
+    return fail("cannot write " + out.string() + " (" + error.message() + "); nothing written");
+  }
+  std::cout << in << " -> " << out.string() << "/: " << labels.size() << " labels (" << map.size[0] << " x "
+            << map.size[1] << " x " << map.size[2] << " voxels of " << spacing[0] << " x " << spacing[1] << " x "
+            << spacing[2] << "), " << points.size() << " points, " << triangles.size() << " triangles; "
+            << result.number_of_iterations << " iterations ("
+            << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
+            << "); bending energy " << result.initial_bending_energy << " -> " << result.final_bending_energy
+            << "; every point in its voxel, " << result.number_of_fixed_vertices << " fixed; " << std::setprecision(3)
+            << progress.seconds() << " s" << std::endl;
+  return EXIT_SUCCESS;
+}
+
 int main(int argc, char* argv[])
 {
   const Options options = parse_options(argc, argv);
@@ -288,6 +416,10 @@ int main(int argc, char* argv[])
   if(!options.error.empty())
     return fail(options.error);
   const std::string in = options.positional[0];
+  if(Constrained_fairing_front_end::is_label_map_file(in))
+    return fair_label_map(options, in);
+  if(options.label_format)
+    return fail("--label-format applies to a label map (.nii, .nii.gz) only");
   const std::string out = options.positional.size() > 1 ? options.positional[1] : default_output(in);
 
   if(!writable_format(out))

@@ -23,9 +23,10 @@ def read_label_map(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarr
 
     A NIfTI-1 or NIfTI-2 file (``.nii``, ``.nii.gz``) is read with nibabel: its voxels as
     stored (a segmentation's integers; stored floats must hold whole numbers) and its
-    ``affine`` (nibabel's choice of the sform or the qform). A ``.npy`` file holds the array
-    alone; its affine is the identity (voxel ``[i, j, k]`` at ``(i, j, k)``). A 4-D image with
-    one volume is read as 3-D.
+    ``affine``: the sform if its code is set, else the qform if its code is set, else the
+    voxel sizes alone (the standard's method 1), as the command-line tool reads them. A
+    ``.npy`` file holds the array alone; its affine is the identity (voxel ``[i, j, k]`` at
+    ``(i, j, k)``). A 4-D image with one volume is read as 3-D.
 
     Parameters
     ----------
@@ -94,6 +95,11 @@ def _read_nifti(path: str):
             data = proxy.get_unscaled()
         else:
             data = np.asanyarray(proxy)
+        header = image.header
+        if int(header["sform_code"]) == 0 and int(header["qform_code"]) == 0:
+            # The NIfTI standard's method 1, as the command-line tool reads it (nibabel would
+            # centre the volume and mirror x, as for Analyze files).
+            return np.asarray(data), np.diag([*header.get_zooms()[:3], 1.0])
         return np.asarray(data), image.affine
     except (OSError, EOFError, ValueError, nibabel.filebasedimages.ImageFileError) as error:
         raise ValueError(f"{path}: not a valid NIfTI file ({error})") from None

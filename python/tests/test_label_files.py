@@ -38,6 +38,16 @@ def save_nifti(path, labels, affine):
     nibabel.save(image, str(path))
 
 
+def triangles_of(V, F):
+    """The mesh as an (m, 3, 3) array of its triangles' corners, whatever its numbering: each
+    triangle started at its smallest corner (orientation kept), the triangles sorted; the order
+    is taken on the corners rounded to 1e-9, so that the last bits do not change it."""
+    corners = V[F]
+    key = lambda p: tuple(np.round(p, 9))  # noqa: E731
+    turned = [np.roll(t, -min(range(3), key=lambda c: key(t[c])), axis=0) for t in corners]
+    return np.array(sorted(turned, key=lambda t: tuple(np.round(t.ravel(), 9))))
+
+
 def volume(V, F):
     a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
     return np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
@@ -121,6 +131,70 @@ def test_bad_affines(affine, message):
     assert error.value.defect == cf.Defect.INVALID_ARGUMENT
     with pytest.raises(cf.InputError, match="either affine"):
         cf.label_surfaces(two_labels(), spacing=(1, 1, 2), affine=np.eye(4))
+
+
+TOOL = os.environ.get("CONSTRAINED_FAIRING_TOOL")
+
+
+@pytest.mark.skipif(TOOL is None, reason="CONSTRAINED_FAIRING_TOOL names no built tool")
+@pytest.mark.parametrize("name, header", [
+    ("sform.nii.gz", "sform"), ("qform.nii", "qform"), ("sizes.nii.gz", "none"),
+    ("big_endian.nii", "big endian"), ("float_labels.nii.gz", "float"),
+])
+def test_tool_reads_label_maps_as_python_does(tmp_path, name, header):
+    """The tool's NIfTI-1 reader (zlib) against nibabel's: the same labels and affine, so the
+    same surfaces, bit for bit."""
+    labels = two_labels()
+    affine = AFFINE
+    if header == "float":
+        labels = labels.astype(np.float32)
+    image = nibabel.Nifti1Image(labels, affine)
+    image.set_sform(affine, code=1 if header != "qform" and header != "none" else 0)
+    image.set_qform(affine, code=1 if header == "qform" else 0)
+    if header == "none":
+        image.header.set_zooms((0.8, 0.8, 2.5))
+    if header == "big endian":
+        image = nibabel.Nifti1Image(labels.astype(">i2"), affine,
+                                    header=image.header.as_byteswapped(">"))
+        image.set_sform(affine, code=1)
+    nibabel.save(image, str(tmp_path / name))
+    out = tmp_path / "out"
+    done = subprocess.run([TOOL, "--label-format", "off", str(tmp_path / name), str(out)],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "2 labels" in done.stdout
+    read, read_affine = cf.read_label_map(tmp_path / name)
+    expected = cf.label_surfaces(read, affine=read_affine)
+    for label in (3, 7):
+        V, F = cf.read_mesh(out / f"label_{label}.off")
+        W, G = expected.surface(label)
+        # The same triangles, numbered in another order where the affine mirrors (the tool
+        # turns each label's mesh, Python the soup it is made from), and the same points but
+        # for the rounding of the move into the world.
+        assert np.allclose(triangles_of(V, F), triangles_of(W, G), rtol=0, atol=1e-12)
+        assert is_closed(F) and volume(V, F) > 0
+
+
+@pytest.mark.skipif(TOOL is None, reason="CONSTRAINED_FAIRING_TOOL names no built tool")
+def test_tool_rejects_bad_label_maps(tmp_path):
+    (tmp_path / "broken.nii.gz").write_bytes(b"\x1f\x8b broken")
+    (tmp_path / "short.nii").write_bytes(b"\0" * 100)
+    nibabel.save(nibabel.Nifti1Image(np.zeros((4, 4, 4), np.uint8), np.eye(4)),
+                 str(tmp_path / "empty.nii"))
+    full = nibabel.Nifti1Image(two_labels(), np.eye(4))
+    nibabel.save(full, str(tmp_path / "full.nii"))
+    (tmp_path / "truncated.nii").write_bytes((tmp_path / "full.nii").read_bytes()[:900])
+    for name, message in (("broken.nii.gz", "not a NIfTI-1 file"), ("short.nii", "not a NIfTI-1 file"),
+                          ("empty.nii", "nothing but the background"), ("truncated.nii", "truncated"),
+                          ("missing.nii", "cannot open")):
+        out = tmp_path / f"out_{name}"
+        done = subprocess.run([TOOL, str(tmp_path / name), str(out)], capture_output=True, text=True,
+                              timeout=60)
+        assert done.returncode != 0 and message in done.stderr, (name, done.stderr)
+        assert not out.exists()
+    done = subprocess.run([TOOL, "--eps", "0.5", str(tmp_path / "full.nii")], capture_output=True,
+                          text=True, timeout=60, cwd=tmp_path)
+    assert done.returncode != 0 and "only --accurate" in done.stderr
 
 
 distributed = pytest.importorskip("distributed")
