@@ -148,9 +148,9 @@ Constrained_fairing_result fair_interfaces(PointRange& points, const TriangleRan
   const std::size_t n = points.size(), m = triangles.size();
   std::vector<std::size_t> interface_of;
   std::vector<bool> flipped;
-  if(Input_error error = interface_error(n, triangles, face_labels, interface_of, flipped))
+  std::vector<Interface_side> sides;
+  if(Input_error error = interface_error(n, triangles, face_labels, interface_of, flipped, sides))
     return reject(std::move(error));
-  const std::vector<Interface_side> sides = interface_sides(triangles, interface_of, flipped);
   Junctions junctions(n, sides, face_labels);
   const auto is_constrained = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                                CGAL::Static_boolean_property_map<std::size_t, false>());

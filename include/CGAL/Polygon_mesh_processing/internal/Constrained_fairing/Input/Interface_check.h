@@ -69,10 +69,11 @@ bool is_negative(Integer v)
 }
 
 // The first defect of the surface of `n` points; on none, `interface_of` and `flipped` as for
-// interface_sides().
+// interface_sides(), and `sides` its result, which the check walks through.
 template <typename TriangleRange, typename LabelPairRange>
 Input_error interface_error(std::size_t n, const TriangleRange& triangles, const LabelPairRange& face_labels,
-                            std::vector<std::size_t>& interface_of, std::vector<bool>& flipped)
+                            std::vector<std::size_t>& interface_of, std::vector<bool>& flipped,
+                            std::vector<Interface_side>& sides)
 {
   const std::size_t m = static_cast<std::size_t>(triangles.size());
   if(n == 0)
@@ -112,7 +113,7 @@ Input_error interface_error(std::size_t n, const TriangleRange& triangles, const
     flipped[order[r]] = face_labels[order[r]][1] < face_labels[order[r]][0];
   }
 
-  const std::vector<Interface_side> sides = interface_sides(triangles, interface_of, flipped);
+  sides = interface_sides(triangles, interface_of, flipped);
   for(std::size_t i = 0, j = 0; i < sides.size(); i = j)
   {
     while(j < sides.size() && sides[j].same_edge(sides[i]) && sides[j].interface == sides[i].interface)
