@@ -424,6 +424,40 @@ def test_calls_from_two_threads_at_once(sphere, elephant):
     assert all(np.array_equal(r, e) for r, e in zip(results, expected))
 
 
+def test_files_read_from_four_threads_at_once(tmp_path):
+    # What a Dask worker with several threads does: every read, bad files included, gives what
+    # it gives alone (the readers touch no process-wide stream while the GIL is released).
+    (tmp_path / "notes.off").write_text("shopping list\n- milk\n")
+    (tmp_path / "truncated.ply").write_bytes((BAD_INPUT / "nan.ply").read_bytes()[:120])
+    (tmp_path / "mesh.unknown").write_text("OFF\n0 0 0\n")
+    paths = sorted(str(p) for p in BAD_INPUT.iterdir()) + [str(DATA / "head.off")] + \
+        [str(tmp_path / name) for name in ("notes.off", "truncated.ply", "mesh.unknown", "no.off")]
+
+    def outcome(path):
+        try:
+            V, F = cf.read_mesh(path)
+            return ("read", V.shape, F.shape)
+        except (ValueError, OSError) as error:
+            return (type(error).__name__, str(error))
+
+    alone = [outcome(path) for path in paths]
+    assert any(o[0] == "ValueError" for o in alone) and any(o[0] == "read" for o in alone)
+    results = [[] for _ in range(4)]
+    barrier = threading.Barrier(4)
+
+    def run(k):
+        barrier.wait()
+        for _ in range(25):
+            results[k].append([outcome(path) for path in paths])
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join(timeout=300)
+    assert all(rounds == [alone] * 25 for rounds in results)
+
+
 def test_the_gil_is_released_while_it_computes():
     # While a call runs in another thread, this thread's Python code runs at once: with the
     # GIL held, it would wait for the call's next check of Ctrl-C, a fifth of a second away.
