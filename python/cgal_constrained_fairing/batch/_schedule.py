@@ -174,11 +174,7 @@ def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dic
         write_mesh(partial, W, F)
         os.replace(partial, output)
         partial = None
-        row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
-                   initial_bending_energy=report.initial_bending_energy,
-                   final_bending_energy=report.final_bending_energy,
-                   initial_energy=report.initial_energy, final_energy=report.final_energy,
-                   max_deviation=report.max_deviation, output=output)
+        _record(row, report, output)
     except Exception as error:
         row.update(status="error", error=_describe(error))
     finally:
@@ -215,12 +211,7 @@ def _fair_label_map(path: str, output: str, label_format: str, fair_options: Dic
         shutil.rmtree(output, ignore_errors=True)  # an earlier output, with force
         os.replace(partial, output)
         partial = None
-        report = result.report
-        row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
-                   initial_bending_energy=report.initial_bending_energy,
-                   final_bending_energy=report.final_bending_energy,
-                   initial_energy=report.initial_energy, final_energy=report.final_energy,
-                   max_deviation=report.max_deviation, output=output)
+        _record(row, result.report, output)
     except Exception as error:
         row.update(status="error", error=_describe(error))
     finally:
@@ -228,6 +219,15 @@ def _fair_label_map(path: str, output: str, label_format: str, fair_options: Dic
             shutil.rmtree(partial, ignore_errors=True)
     row["seconds"] = time.perf_counter() - start
     return row
+
+
+def _record(row: Row, report, output: str) -> None:
+    """What a finished task's row says of its fairing's `report` and where its output went."""
+    row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
+               initial_bending_energy=report.initial_bending_energy,
+               final_bending_energy=report.final_bending_energy,
+               initial_energy=report.initial_energy, final_energy=report.final_energy,
+               max_deviation=report.max_deviation, output=output)
 
 
 def _describe(error: BaseException) -> str:

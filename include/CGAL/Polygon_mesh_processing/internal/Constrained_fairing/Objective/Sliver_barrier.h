@@ -6,11 +6,12 @@
 //
 //   B = nu * sum over the triangles of q < q0 of  (q0 / (q + q0 / 100) - 1)^2,
 //
-// q0 about the quality of a needle with a 3 degree angle, nu the weight. Why: a hinge of the
-// bending energy costs |e|^2 / A_e times its bend, so the energy drops when an edge at a bend
-// shrinks or a triangle there flattens, and its minima are full of needles and caps (angles
-// down to 0.0003 degree on the noisy bunny), whatever else holds the vertices (a uniform
-// Laplacian term along the surface, an edge length term: see the user manual). The barrier
+// q0 about the quality of a needle with a 3 degree angle (6 on label surfaces, Interface_driver.h),
+// nu the weight. Why: a hinge of the bending energy costs |e|^2 / A_e times its bend, so the
+// energy drops when an edge at a bend shrinks or a triangle there flattens, and its minima are
+// full of needles and caps (angles down to 0.0003 degree on the noisy bunny), whatever else
+// holds the vertices (a uniform Laplacian term along the surface, an edge length term: see the
+// user manual). The barrier
 // leaves every triangle of quality q0 and more alone, so it changes neither the shape nor, in
 // our measurements, the bending energy reached; it is finite everywhere, 99^2 nu for a
 // triangle of zero area (one shrunk to a point has no shape and no term), and smooth where it
