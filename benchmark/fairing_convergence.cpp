@@ -32,32 +32,6 @@ using benchmark::Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
 
-namespace {
-
-// The sum of squared distances of the vertices of `from` to the surface of `to`.
-double squared_distances_to(const Mesh& from, const Mesh& to)
-{
-  benchmark::Tree tree(faces(to).first, faces(to).second, to);
-  tree.accelerate_distance_queries();
-  double sum = 0;
-  for(auto v : vertices(from))
-    sum += tree.squared_distance(from.point(v));
-  return sum;
-}
-
-bool ball_holds(const Mesh& result, const Mesh& input, double eps)
-{
-  for(auto v : vertices(result))
-  {
-    const double d2 = CGAL::squared_distance(result.point(v), input.point(v));
-    if(!(d2 <= eps * eps && std::sqrt(d2) <= eps))
-      return false;
-  }
-  return true;
-}
-
-} // namespace
-
 int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
@@ -81,28 +55,25 @@ int main(int argc, char* argv[])
     reference, eps, CFP::energy_decrease_threshold(0.0, CGAL::parameters::number_of_iterations(reference_iterations)));
   const double ref_seconds = benchmark::seconds_since(start);
 
-  const double distance_rms =
-    std::sqrt((squared_distances_to(result, reference) + squared_distances_to(reference, result)) /
-              double(2 * num_vertices(result)));
-  double normal_sum = 0;
-  for(auto f : faces(result))
-    normal_sum += benchmark::angle_deg(PMP::compute_face_normal(f, result), PMP::compute_face_normal(f, reference));
+  const benchmark::Agreement agreement = benchmark::compare(result, reference);
+  const double distance_rms = agreement.distance_rms;
+  const double normal_difference = agreement.normal_difference_deg;
 
   std::cout << benchmark::machine_description() << "\n"
             << name << " Loop subdivided " << level << " times: " << num_faces(noisy)
             << " triangles; noise and epsilon 0.25 h = " << eps << "\n"
             << std::setprecision(4) << "default call:  " << seconds << " s, " << r.number_of_iterations
             << " iterations, bending energy " << r.final_bending_energy << ", smallest angle "
-            << benchmark::smallest_angle_deg(result) << " deg, bound " << (ball_holds(result, noisy, eps) ? "holds" : "VIOLATED")
+            << benchmark::smallest_angle_deg(result) << " deg, bound " << (benchmark::ball_holds(result, noisy, eps) ? "holds" : "VIOLATED")
             << "\n"
             << "reference:     " << ref_seconds << " s, " << r_ref.number_of_iterations << " iterations, bending energy "
             << r_ref.final_bending_energy << ", smallest angle " << benchmark::smallest_angle_deg(reference)
-            << " deg, bound " << (ball_holds(reference, noisy, eps) ? "holds" : "VIOLATED") << "\n"
+            << " deg, bound " << (benchmark::ball_holds(reference, noisy, eps) ? "holds" : "VIOLATED") << "\n"
             << "against it:    surface distance RMS " << 100 * distance_rms / eps << " % of epsilon, mean normal difference "
-            << normal_sum / double(num_faces(result)) << " deg, bending energy "
+            << normal_difference << " deg, bending energy "
             << r.final_bending_energy / r_ref.final_bending_energy << " of it\n"
             << "row: " << num_faces(noisy) << " " << r.number_of_iterations << " " << 100 * distance_rms / eps << " "
-            << normal_sum / double(num_faces(result)) << " " << r.final_bending_energy / r_ref.final_bending_energy
+            << normal_difference << " " << r.final_bending_energy / r_ref.final_bending_energy
             << std::endl;
   return EXIT_SUCCESS;
 }

@@ -4,12 +4,12 @@
 // How the default call scales, one mesh size per process so that the peak memory is that of
 // one call:
 //
-//   fairing_scaling [MESH] [--level L] [--runs N] [--threads K]
+//   fairing_scaling [MESH] [--level L] [--runs N] [--threads K] [--reference R] [--default-only 1]
 //
-// MESH (default: the bundled bunny, data/bunny00.off) is Loop subdivided L times (default 1)
-// and given seeded noise of 0.25 h; epsilon = 0.25 h. K limits the library's threads (default:
-// all). Prints the CPU model and the threads first; reports, all measured in this process,
-// medians of N runs (default 3):
+// MESH (default: the bundled bunny, data/bunny00.off) is Loop subdivided L times (default 1; 4
+// gives 19.3 M triangles) and given seeded noise of 0.25 h; epsilon = 0.25 h. K limits the
+// library's threads (default: all). Prints the CPU model and the threads first; reports, all
+// measured in this process, medians of N runs (default 3):
 //  - the default call as a user makes it: time, iterations, energy evaluations, energy
 //    (the objective, and the bending energy alone), the result's smallest angle;
 //  - the same call without the barrier against slivers (sliver_barrier_weight(0)): time,
@@ -27,10 +27,16 @@
 //  - two yardsticks on the same mesh: CGAL's smooth_shape (10 iterations, time 0.03 h^2) and
 //    one CHOLMOD supernodal factorization of the cotan stiffness matrix S (when CHOLMOD is
 //    found), with the default call's time as a ratio of each.
-// run_scaling.sh runs it over sizes and fits the growth exponent.
+// With R > 0, also the default call's result against the surface that R iterations with no
+// stopping rule reach from the same input (whether it stopped early): the RMS distance between
+// the two surfaces both ways in percent of epsilon, the mean normal difference, the ratio of
+// their bending energies, and the bound in double. --default-only 1 leaves out the variants of
+// the call (no barrier, accurate objective, the two builds), which on the largest meshes take
+// hours. run_scaling.sh runs it over sizes and fits the growth exponent.
 
 #include "benchmark_support.h"
 #include "default_call_variant.h"
+#include "surface_quality.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
@@ -54,6 +60,8 @@ int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
   const int runs = arguments.runs;
+  const auto reference_iterations = static_cast<unsigned int>(std::stoul(arguments.option("reference", "0")));
+  const bool default_only = arguments.option("default-only", "0") != "0";
   const benchmark::Thread_limit thread_limit(arguments);
   Mesh base;
   std::string name;
@@ -90,6 +98,9 @@ int main(int argc, char* argv[])
   PMP::Constrained_fairing_result r = PMP::constrained_fairing(noisy, eps);
   const double peak = benchmark::peak_memory_bytes();
   const double smallest_angle = benchmark::smallest_angle_deg(noisy);
+  Mesh first_result;
+  if(reference_iterations > 0)
+    first_result = noisy;
   restore(noisy);
 
   // Both calls are timed without the restoring of the points.
@@ -100,51 +111,54 @@ int main(int argc, char* argv[])
     restore(noisy);
     return call;
   });
-  PMP::Constrained_fairing_result r_plain;
-  double plain_smallest_angle = 0;
-  const double plain_seconds = benchmark::median_of(runs, [&] {
-    const auto start = std::chrono::steady_clock::now();
-    r_plain = PMP::constrained_fairing(noisy, eps, PMP::constrained_fairing_parameters::sliver_barrier_weight(0.));
-    const double seconds = benchmark::seconds_since(start);
-    plain_smallest_angle = benchmark::smallest_angle_deg(noisy);
-    restore(noisy);
-    return seconds;
-  });
-  PMP::Constrained_fairing_result r_accurate;
-  const double accurate_seconds = benchmark::median_of(runs, [&] {
-    const auto start = std::chrono::steady_clock::now();
-    r_accurate = PMP::constrained_fairing(
-      noisy, eps, PMP::constrained_fairing_parameters::fairing_objective(PMP::Constrained_fairing_objective::ACCURATE));
-    const double seconds = benchmark::seconds_since(start);
-    restore(noisy);
-    return seconds;
-  });
-
-  // The two builds alternate, so that both see the machine in the same state.
-  std::vector<double> with_flags, without_flag;
-  std::vector<Point> with_flags_points;
+  PMP::Constrained_fairing_result r_plain, r_accurate;
+  double plain_smallest_angle = 0, plain_seconds = 0, accurate_seconds = 0, flags_seconds = 0, no_flag_seconds = 0;
   bool same_points = true;
-  for(int run = 0; run < runs; ++run)
+  if(!default_only)
   {
-    auto start = std::chrono::steady_clock::now();
-    benchmark::default_call_with_cgal_flags(noisy, eps);
-    with_flags.push_back(benchmark::seconds_since(start));
-    with_flags_points.clear();
-    for(auto v : vertices(noisy))
-      with_flags_points.push_back(noisy.point(v));
-    restore(noisy);
-    start = std::chrono::steady_clock::now();
-    benchmark::default_call_without_rounding_math(noisy, eps);
-    without_flag.push_back(benchmark::seconds_since(start));
-    for(auto v : vertices(noisy))
-      same_points = same_points && noisy.point(v) == with_flags_points[v.idx()];
-    restore(noisy);
+    plain_seconds = benchmark::median_of(runs, [&] {
+      const auto start = std::chrono::steady_clock::now();
+      r_plain = PMP::constrained_fairing(noisy, eps, PMP::constrained_fairing_parameters::sliver_barrier_weight(0.));
+      const double seconds = benchmark::seconds_since(start);
+      plain_smallest_angle = benchmark::smallest_angle_deg(noisy);
+      restore(noisy);
+      return seconds;
+    });
+    accurate_seconds = benchmark::median_of(runs, [&] {
+      const auto start = std::chrono::steady_clock::now();
+      r_accurate = PMP::constrained_fairing(
+        noisy, eps, PMP::constrained_fairing_parameters::fairing_objective(PMP::Constrained_fairing_objective::ACCURATE));
+      const double seconds = benchmark::seconds_since(start);
+      restore(noisy);
+      return seconds;
+    });
+
+    // The two builds alternate, so that both see the machine in the same state.
+    std::vector<double> with_flags, without_flag;
+    std::vector<Point> with_flags_points;
+    for(int run = 0; run < runs; ++run)
+    {
+      auto start = std::chrono::steady_clock::now();
+      benchmark::default_call_with_cgal_flags(noisy, eps);
+      with_flags.push_back(benchmark::seconds_since(start));
+      with_flags_points.clear();
+      for(auto v : vertices(noisy))
+        with_flags_points.push_back(noisy.point(v));
+      restore(noisy);
+      start = std::chrono::steady_clock::now();
+      benchmark::default_call_without_rounding_math(noisy, eps);
+      without_flag.push_back(benchmark::seconds_since(start));
+      for(auto v : vertices(noisy))
+        same_points = same_points && noisy.point(v) == with_flags_points[v.idx()];
+      restore(noisy);
+    }
+    const auto median = [](std::vector<double> t) {
+      std::sort(t.begin(), t.end());
+      return t[t.size() / 2];
+    };
+    flags_seconds = median(with_flags);
+    no_flag_seconds = median(without_flag);
   }
-  const auto median = [](std::vector<double> t) {
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
-  };
-  const double flags_seconds = median(with_flags), no_flag_seconds = median(without_flag);
 
   const double setup = benchmark::median_seconds(runs, [&] {
     PMP::constrained_fairing(noisy, eps, CGAL::parameters::number_of_iterations(0));
@@ -187,24 +201,52 @@ int main(int argc, char* argv[])
   std::cout << std::setprecision(4) << "default call:      " << seconds << " s, " << r.number_of_iterations
             << " iterations, " << r.number_of_energy_evaluations << " evaluations, energy " << r.initial_energy
             << " -> " << r.final_energy << " (bending " << r.final_bending_energy << "), smallest angle "
-            << smallest_angle << " deg\n"
-            << "no barrier:        " << plain_seconds << " s, " << r_plain.number_of_iterations
-            << " iterations, bending energy " << r_plain.final_bending_energy << ", smallest angle "
-            << plain_smallest_angle << " deg; the default call takes " << seconds / plain_seconds << " of it\n"
-            << "peak memory:       " << peak / (1 << 20) << " MiB, " << peak / triangles << " bytes per triangle\n"
+            << smallest_angle << " deg\n";
+  if(!default_only)
+    std::cout << "no barrier:        " << plain_seconds << " s, " << r_plain.number_of_iterations
+              << " iterations, bending energy " << r_plain.final_bending_energy << ", smallest angle "
+              << plain_smallest_angle << " deg; the default call takes " << seconds / plain_seconds << " of it\n";
+  std::cout << "peak memory:       " << peak / (1 << 20) << " MiB, " << peak / triangles << " bytes per triangle\n"
             << "breakdown:         setup " << setup << " s, energy+gradient " << evaluations << " s ("
             << r.number_of_energy_evaluations << " x " << evaluation << " s), other " << seconds - setup - evaluations
             << " s; factorization and linear solves: none\n"
-            << "rounding math:     with CGAL's flags (-frounding-math) " << flags_seconds << " s, without "
-            << no_flag_seconds << " s: " << flags_seconds / no_flag_seconds << " times; "
-            << (same_points ? "the same points" : "different points") << "\n"
             << "smooth_shape:      " << smoothing << " s (10 iterations): the default call takes "
             << seconds / smoothing << " of it\n";
-  std::cout << "accurate objective: " << accurate_seconds << " s, " << r_accurate.number_of_iterations << " iterations\n";
+  if(!default_only)
+    std::cout << "rounding math:     with CGAL's flags (-frounding-math) " << flags_seconds << " s, without "
+              << no_flag_seconds << " s: " << flags_seconds / no_flag_seconds << " times; "
+              << (same_points ? "the same points" : "different points") << "\n"
+              << "accurate objective: " << accurate_seconds << " s, " << r_accurate.number_of_iterations << " iterations\n";
   if(factorization > 0)
+  {
     std::cout << "CHOLMOD factor S:  " << factorization << " s: the default call takes " << seconds / factorization
-              << " times it, the accurate objective " << accurate_seconds / factorization << " times\n";
+              << " times it";
+    if(!default_only)
+      std::cout << ", the accurate objective " << accurate_seconds / factorization << " times";
+    std::cout << "\n";
+  }
   std::cout << "row: " << num_faces(noisy) << " " << seconds << " " << peak / triangles << " " << r.number_of_iterations
             << " " << smoothing << " " << factorization << " " << flags_seconds << " " << no_flag_seconds << std::endl;
+  if(reference_iterations > 0)
+  {
+    restore(noisy);
+    const auto start = std::chrono::steady_clock::now();
+    const PMP::Constrained_fairing_result r_ref = PMP::constrained_fairing(
+      noisy, eps,
+      PMP::constrained_fairing_parameters::energy_decrease_threshold(
+        0.0, CGAL::parameters::number_of_iterations(reference_iterations)));
+    const double reference_seconds = benchmark::seconds_since(start);
+    Mesh input_mesh = noisy;
+    restore(input_mesh);
+    const benchmark::Agreement agreement = benchmark::compare(first_result, noisy);
+    std::cout << "against " << reference_iterations << " iterations with no stopping rule (" << reference_seconds
+              << " s, bending energy " << r_ref.final_bending_energy << "): surface distance RMS "
+              << 100 * agreement.distance_rms / eps << " % of epsilon, mean normal difference "
+              << agreement.normal_difference_deg << " deg, bending energy " << r.final_bending_energy / r_ref.final_bending_energy
+              << " of it; bound " << (benchmark::ball_holds(first_result, input_mesh, eps) ? "holds" : "VIOLATED") << "\n"
+              << "quality-row: " << num_faces(noisy) << " " << r.number_of_iterations << " "
+              << 100 * agreement.distance_rms / eps << " " << agreement.normal_difference_deg << " "
+              << r.final_bending_energy / r_ref.final_bending_energy << std::endl;
+  }
   return EXIT_SUCCESS;
 }

@@ -115,6 +115,49 @@ inline Quality measure(const Mesh& result, const Mesh& input, const Clean_surfac
   return q;
 }
 
+// A result against a reference result from the same input (same connectivity): how far the
+// iterations that produced the reference would still have moved it.
+struct Agreement
+{
+  double distance_rms = 0;   // each vertex of one to the other surface, both ways
+  double normal_difference_deg = 0; // mean angle between corresponding face normals
+};
+
+inline double squared_distances_to(const Mesh& from, const Mesh& to)
+{
+  Tree tree(faces(to).first, faces(to).second, to);
+  tree.accelerate_distance_queries();
+  double sum = 0;
+  for(auto v : vertices(from))
+    sum += tree.squared_distance(from.point(v));
+  return sum;
+}
+
+inline Agreement compare(const Mesh& result, const Mesh& reference)
+{
+  Agreement a;
+  a.distance_rms = std::sqrt((squared_distances_to(result, reference) + squared_distances_to(reference, result)) /
+                             double(2 * num_vertices(result)));
+  double normal_sum = 0;
+  for(auto f : faces(result))
+    normal_sum += angle_deg(CGAL::Polygon_mesh_processing::compute_face_normal(f, result),
+                            CGAL::Polygon_mesh_processing::compute_face_normal(f, reference));
+  a.normal_difference_deg = normal_sum / double(num_faces(result));
+  return a;
+}
+
+// Whether every vertex of `result` lies within `eps` of its position in `input`, in double.
+inline bool ball_holds(const Mesh& result, const Mesh& input, double eps)
+{
+  for(auto v : vertices(result))
+  {
+    const double d2 = CGAL::squared_distance(result.point(v), input.point(v));
+    if(!(d2 <= eps * eps && std::sqrt(d2) <= eps))
+      return false;
+  }
+  return true;
+}
+
 } // namespace benchmark
 
 #endif // CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H
