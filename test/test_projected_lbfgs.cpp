@@ -4,8 +4,8 @@
 // The default solver, the projected quasi-Newton method: on a noisy plane within a bound that
 // contains the plane, the minimum (energy 0) is known and must be approached, with every
 // iterate in the bound and the energy never rising; the result is bit-identical whatever the
-// number of threads; no step flips or collapses a triangle; and the fused vector passes give
-// the same bits as the separate ones.
+// number of threads; no step flips or collapses a triangle; the fused vector passes give the
+// same bits as the separate ones; and the stopping rule tells slow progress from convergence.
 
 #include "test_support.h"
 
@@ -21,6 +21,7 @@
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
+namespace CF = PMP::internal::Constrained_fairing;
 using PMP::Deviation_bound;
 using test::Mesh;
 using test::Point;
@@ -136,7 +137,6 @@ void check_no_step_flips_a_triangle()
 // the operations shows in the last bits.
 void check_fused_passes()
 {
-  namespace CF = PMP::internal::Constrained_fairing;
   const Eigen::Index n = static_cast<Eigen::Index>(3 * CF::parallel_block_size + 123);
   std::mt19937 random(5);
   std::uniform_real_distribution<double> uniform(-1, 1), exponent(-8, 8);
@@ -159,8 +159,53 @@ void check_fused_passes()
   CHECK(y == separate);
 }
 
+// The iteration at which `options`' rule stops on the energies `energy(k)`, k = 0, 1, ..., or 0
+// if it runs all `iterations`.
+template <typename Energy>
+std::size_t stopping_iteration(CF::Solver_options options, const Energy& energy, std::size_t iterations)
+{
+  options.max_iterations = iterations;
+  CF::Stopping_rule rule(options);
+  CF::Solver_report report;
+  rule.push(energy(0));
+  for(std::size_t k = 1; k <= iterations; ++k)
+    if(!rule.next_iteration(energy(k), CF::Always_continue(), report))
+      return k;
+  return 0;
+}
+
+void check_stopping_rule()
+{
+  const CF::Solver_options options = CF::default_options(PMP::Constrained_fairing_method::QUASI_NEWTON);
+  const double fraction = options.remaining_fraction;
+  CHECK(fraction > 0);
+  // Steady progress ten times slower than the threshold: never taken for convergence.
+  const auto steady = [&](std::size_t k) { return 100 * (1 - 0.1 * options.threshold * double(k)); };
+  CHECK(stopping_iteration(options, steady, 1000) == 0);
+  // Slowly fading progress, where the extrapolation is exact: the run stops at the first
+  // iteration where what remains is at most the fraction of the energy, while the threshold
+  // alone stops it earlier, with more than that left.
+  const double floor = 100, rate = 0.995;
+  const auto fading = [&](std::size_t k) { return floor + 50 * std::pow(rate, double(k)); };
+  const auto remaining_is_small = [&](std::size_t k) {
+    return fading(k) - floor <= fraction * fading(k) * (1 + 1e-9);
+  };
+  const std::size_t stop = stopping_iteration(options, fading, 1000);
+  CHECK(stop > 0);
+  CHECK(remaining_is_small(stop));
+  CHECK(!remaining_is_small(stop - 1));
+  CF::Solver_options threshold_alone = options;
+  threshold_alone.remaining_fraction = 0;
+  const std::size_t early = stopping_iteration(threshold_alone, fading, 1000);
+  CHECK(early > 0 && early < stop && !remaining_is_small(early));
+  // No decrease over a whole window: stationary.
+  const auto flat = [&](std::size_t k) { return k < 60 ? 100. - double(k) : 40.; };
+  CHECK(stopping_iteration(options, flat, 1000) == 60 + options.window);
+}
+
 int main()
 {
+  check_stopping_rule();
   check_fused_passes();
   check_known_minimum(Deviation_bound::BALL);
   check_known_minimum(Deviation_bound::BOX);

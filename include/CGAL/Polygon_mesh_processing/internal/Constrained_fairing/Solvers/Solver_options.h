@@ -22,6 +22,9 @@ struct Solver_options
   // average over the last `window` iterations.
   double threshold = 1e-3;
   std::size_t window = 3;
+  // And, if positive, when the decrease still to come, extrapolated from the last two windows,
+  // is at most this fraction of the energy (Stopping_rule.h).
+  double remaining_fraction = 0;
   // Newton method: the largest number of conjugate gradient iterations per step (at least one
   // is made).
   std::size_t cg_iterations = 1;
