@@ -648,6 +648,7 @@ PYBIND11_MODULE(_core, m)
       d["max_iterations"] = settings.options.max_iterations;
       d["energy_decrease_threshold"] = settings.options.threshold;
       d["energy_decrease_window"] = settings.options.window;
+      d["energy_remaining_fraction"] = settings.options.remaining_fraction;
       d["initial_smoothing_steps"] = settings.options.smoothing_steps;
       d["conjugate_gradient_iterations"] = settings.options.cg_iterations;
       d["fidelity_weight"] = settings.fidelity_weight;

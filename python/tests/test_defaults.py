@@ -21,6 +21,11 @@ PAPER = _core.default_settings(_core.Method.ACTIVE_SET_NEWTON)
 WORDS = {3: "three"}
 
 
+def percent(fraction):
+    """A fraction as the texts state it, in percent: ``0.01`` as ``"1 %"``."""
+    return f"{number(round(100 * fraction, 12))} %"
+
+
 def number(x):
     """``1000``, ``1.25e-4``, ``1e-3``: integers as integers, others in the shortest
     scientific form."""
@@ -65,6 +70,8 @@ def test_fair_docstring():
     }
     for name, text in expected.items():
         assert text in sections[name], (name, sections[name])
+    remaining = f"still to come is at most {percent(q['energy_remaining_fraction'])} of the energy"
+    assert remaining in " ".join(sections["energy_decrease_threshold"].split())
     assert inspect.signature(cf.fair).parameters["objective"].default == q["objective"].name.lower()
 
 
@@ -82,6 +89,11 @@ def test_reference_manual():
     def per_method(key):
         return f"`{number(q[key])}` for `QUASI_NEWTON`, `{number(p[key])}` for the paper's methods"
 
+    header = " ".join((ROOT / "include/CGAL/Polygon_mesh_processing/constrained_fairing.h").read_text().split())
+    remaining = percent(q["energy_remaining_fraction"])
+    assert f"is at most {remaining} of the energy) or the last three" in header
+    assert f"decrease still to come is at most {remaining} of the energy" in header
+    assert p["energy_remaining_fraction"] == 0
     assert defaults["number_of_iterations"] == per_method("max_iterations")
     assert defaults["energy_decrease_threshold"] == per_method("energy_decrease_threshold")
     assert defaults["initial_smoothing_steps"] == per_method("initial_smoothing_steps")
@@ -105,10 +117,13 @@ def test_user_manual_and_readme():
                  f"{p['max_iterations']} for the others)",
                  f"`conjugate_gradient_iterations` (default {p['conjugate_gradient_iterations']})",
                  f"`sliver_barrier_weight` (default {number(q['sliver_barrier_weight'])};",
-                 f"`fidelity_weight` (default \\f$ 10^{exponent} \\f$;"):
+                 f"`fidelity_weight` (default \\f$ 10^{exponent} \\f$;",
+                 f"waits until what is left to gain is at most {percent(q['energy_remaining_fraction'])} "
+                 "of the energy"):
         assert text in manual, text
     readme = " ".join((ROOT / "README.md").read_text().split())
     assert f"`number_of_iterations` (default {q['max_iterations']})" in readme
+    assert f"is at most {percent(q['energy_remaining_fraction'])} of the energy" in readme
 
 
 def test_default_tolerance_of_the_front_ends():

@@ -46,11 +46,12 @@ constexpr double default_sliver_barrier_weight = 1;
 // noise is gone, so it is judged over 50 iterations and against a smaller threshold, and it
 // stops only once the decrease still to come, extrapolated from the last two windows, is at
 // most 1 % of the energy (Stopping_rule.h): on large meshes each iteration gains less, and the
-// threshold alone stopped the call early there (at 19.3 M triangles after 256 iterations, 3.5 %
-// above the energy of 600). On the energy traces of 2000 iterations of benchmark/
-// fairing_convergence at 75 k, 300 k and 1.2 M triangles, 1 % stops within 1.5 %, 1.8 % and
-// 0.8 % of the energy of 1000 iterations, 2 % stopped at 1.2 M where the threshold alone did
-// (2.7 % above), and 0.5 % ran 1273 iterations there. It starts from a smoothed input
+// threshold alone stopped the call early there. On energy traces of the noisy bunny with no
+// stopping rule (2000 iterations at 75 k, 300 k and 1.2 M triangles, 1000 at 4.8 M and 19.3 M),
+// 1 % stops within 1.5, 1.8 and 0.8 % of the energy of 1000 iterations up to 1.2 M, and runs on
+// at 4.8 M and 19.3 M, where the threshold alone stopped 3.0 and 7.7 % above it (after 703 and
+// 263 iterations; the smallest extrapolated remainder while the threshold held was 1.9 and
+// 1.5 %, so 2 % would have stopped at 19.3 M). It starts from a smoothed input
 // (Smoothed_start.h); the paper's methods start from the input.
 inline Solver_options default_options(Constrained_fairing_method method)
 {
