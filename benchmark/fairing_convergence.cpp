@@ -64,8 +64,8 @@ int main(int argc, char* argv[])
             << " triangles; noise and epsilon 0.25 h = " << eps << "\n"
             << std::setprecision(4) << "default call:  " << seconds << " s, " << r.number_of_iterations
             << " iterations, bending energy " << r.final_bending_energy << ", smallest angle "
-            << benchmark::smallest_angle_deg(result) << " deg, bound " << (benchmark::ball_holds(result, noisy, eps) ? "holds" : "VIOLATED")
-            << "\n"
+            << benchmark::smallest_angle_deg(result) << " deg, bound "
+            << (benchmark::ball_holds(result, noisy, eps) ? "holds" : "VIOLATED") << "\n"
             << "reference:     " << ref_seconds << " s, " << r_ref.number_of_iterations << " iterations, bending energy "
             << r_ref.final_bending_energy << ", smallest angle " << benchmark::smallest_angle_deg(reference)
             << " deg, bound " << (benchmark::ball_holds(reference, noisy, eps) ? "holds" : "VIOLATED") << "\n"

@@ -49,7 +49,7 @@ constexpr double default_sliver_barrier_weight = 1;
 // threshold alone stopped the call early there. On energy traces of the noisy bunny with no
 // stopping rule (2000 iterations at 75 k, 300 k and 1.2 M triangles, 1000 at 4.8 M and 19.3 M),
 // 1 % stops within 1.5, 1.8 and 0.8 % of the energy of 1000 iterations up to 1.2 M, and runs on
-// at 4.8 M and 19.3 M, where the threshold alone stopped 3.0 and 7.7 % above it (after 704 and
+// at 4.8 M and 19.3 M, where the threshold alone stopped 2.9 and 7.7 % above it (after 704 and
 // 264 iterations; the smallest extrapolated remainder while the threshold held was 1.9 and
 // 1.5 %, so 2 % would have stopped at 19.3 M). It starts from a smoothed input
 // (Smoothed_start.h); the paper's methods start from the input.
