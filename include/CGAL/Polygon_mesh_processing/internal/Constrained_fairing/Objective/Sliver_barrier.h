@@ -6,24 +6,22 @@
 //
 //   B = nu * sum over the triangles of q < q0 of  (q0 / (q + q0 / 100) - 1)^2,
 //
-// q0 about the quality of a needle with a 3 degree angle (6 on label surfaces, Interface_driver.h),
-// nu the weight. Why: a hinge of the bending energy costs |e|^2 / A_e times its bend, so the
-// energy drops when an edge at a bend shrinks or a triangle there flattens, and its minima are
-// full of needles and caps (angles down to 0.0003 degree on the noisy bunny), whatever else
-// holds the vertices (a uniform Laplacian term along the surface, an edge length term: see the
-// user manual). The barrier
-// leaves every triangle of quality q0 and more alone, so it changes neither the shape nor, in
-// our measurements, the bending energy reached; it is finite everywhere, 99^2 nu for a
-// triangle of zero area (one shrunk to a point has no shape and no term), and smooth where it
-// is nonzero. Like the bending energy it is dimensionless, and like the hinges that pull a
-// triangle flat its terms are per triangle, not divided by their number: divided by it, the
-// barrier weakened as the mesh was refined, and the smallest angle on the noisy bunny fell
-// from 2.7 to 1.3 degrees between 75 k and 1.2 M triangles (2.9 at both per triangle).
-// Triangles that are degenerate in the input are left out, as in the bending energy
-// (Mesh_operators.h). Like the energy, it is evaluated on the points brought to unit scale
-// (Unit_scaled_points, Points.h): its test and its gradient take squares of squared lengths,
-// which in double underflow for coordinates under about 1e-76 and overflow over 1e76, where the
-// barrier was otherwise wrong or zero.
+// q0 about the quality of a needle with a 3 degree angle (6 on label surfaces, set in
+// Interface_driver.h), nu the weight. Why: a hinge of the bending energy costs |e|^2 / A_e times
+// its bend, so the energy drops when an edge at a bend shrinks or a triangle there flattens, and
+// its minima are full of needles and caps (angles down to 0.0003 degree on the noisy bunny),
+// whatever else holds the vertices (a uniform Laplacian term along the surface, an edge length
+// term: see the user manual). The barrier leaves every triangle of quality q0 and more alone, so it
+// changes neither the shape nor, in our measurements, the bending energy reached; it is finite
+// everywhere, 99^2 nu for a triangle of zero area (one shrunk to a point has no shape and no term),
+// and smooth where it is nonzero. Like the bending energy it is dimensionless, and like the hinges
+// that pull a triangle flat its terms are per triangle, not divided by their number: divided by it,
+// the barrier weakened as the mesh was refined, and the smallest angle on the noisy bunny fell from
+// 2.7 to 1.3 degrees between 75 k and 1.2 M triangles (2.9 at both per triangle). Triangles that
+// are degenerate in the input are left out, as in the bending energy (Mesh_operators.h). Like the
+// energy, it is evaluated on the points brought to unit scale (Unit_scaled_points, Points.h): its
+// test and its gradient take squares of squared lengths, which in double underflow for coordinates
+// under about 1e-76 and overflow over 1e76, where the barrier was otherwise wrong or zero.
 //
 // Evaluation: each block of triangles lists its slivers in parallel, then their terms are
 // summed and their gradients added in triangle order, so that results do not depend on the

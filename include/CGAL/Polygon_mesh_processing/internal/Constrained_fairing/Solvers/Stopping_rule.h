@@ -8,11 +8,11 @@
 //
 // Why the second test: a small decrease alone does not tell convergence from slow progress. On
 // large meshes each iteration gains less, so a run can fall under the threshold long before it
-// is done (at 19.3 M triangles the default call stopped after 264 iterations at an energy
-// 7.7 % above that of 1000). What is left is estimated from the last two windows: if
-// each window's decrease were the ratio q of the one before, as it is in linear convergence,
-// d1 q / (1 - q) would remain after a window that gained d1. Steady progress, however slow,
-// has q near or above 1 and does not stop the run; progress that fades does.
+// is done (the figures are with the defaults, in Fairing_settings.h). What is left is estimated
+// from the last two windows: if each window's decrease were the ratio q of the one before, as
+// it is in linear convergence, d1 q / (1 - q) would remain after a window that gained d1.
+// Steady progress, however slow, has q near or above 1 and does not stop the run; progress that
+// fades does.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_STOPPING_RULE_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_STOPPING_RULE_H
