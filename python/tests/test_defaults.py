@@ -4,6 +4,7 @@ reference manual's named parameters (``constrained_fairing.h``), the user manual
 and the tolerance of the tool and the batch. A default changed in the code fails here until
 every text that states it is changed too."""
 
+import functools
 import inspect
 import math
 import re
@@ -75,10 +76,15 @@ def test_fair_docstring():
     assert inspect.signature(cf.fair).parameters["objective"].default == q["objective"].name.lower()
 
 
+@functools.lru_cache(maxsize=None)
+def _reference_manual():
+    """The text of constrained_fairing.h, read once for the tests that check it."""
+    return (ROOT / "include/CGAL/Polygon_mesh_processing/constrained_fairing.h").read_text()
+
+
 def _reference_defaults():
     """``\\cgalParamDefault{...}`` of each named parameter of constrained_fairing.h."""
-    header = (ROOT / "include/CGAL/Polygon_mesh_processing/constrained_fairing.h").read_text()
-    blocks = re.findall(r"\\cgalParamNBegin\{(\w+)\}(.*?)\\cgalParamNEnd", header, re.S)
+    blocks = re.findall(r"\\cgalParamNBegin\{(\w+)\}(.*?)\\cgalParamNEnd", _reference_manual(), re.S)
     return {name: re.search(r"\\cgalParamDefault\{(.*)\}", block).group(1) for name, block in blocks}
 
 
@@ -89,7 +95,7 @@ def test_reference_manual():
     def per_method(key):
         return f"`{number(q[key])}` for `QUASI_NEWTON`, `{number(p[key])}` for the paper's methods"
 
-    header = " ".join((ROOT / "include/CGAL/Polygon_mesh_processing/constrained_fairing.h").read_text().split())
+    header = " ".join(_reference_manual().split())
     remaining = percent(q["energy_remaining_fraction"])
     assert f"is at most {remaining} of the energy) or the last three" in header
     assert f"decrease still to come is at most {remaining} of the energy" in header
