@@ -45,6 +45,7 @@ struct Soup
   std::vector<Point> points;
   std::vector<Triangle> triangles;
   std::vector<std::array<Label, 2> > face_labels;
+  std::vector<std::array<double, 3> > half_extents; // each point's box
   std::vector<std::set<Label> > around; // the labels of each point's triangles
 };
 
@@ -53,7 +54,8 @@ Soup make_soup(const std::vector<Label>& labels, const std::array<std::size_t, 3
 {
   Soup soup;
   soup.spacing = spacing;
-  PMP::label_surface_nets(labels.data(), size, spacing, {0, 0, 0}, soup.points, soup.triangles, soup.face_labels);
+  PMP::label_surface_nets(labels.data(), size, spacing, {0, 0, 0}, soup.points, soup.triangles, soup.face_labels,
+                          soup.half_extents);
   soup.around.resize(soup.points.size());
   for(std::size_t f = 0; f < soup.triangles.size(); ++f)
     for(std::size_t v : soup.triangles[f])
@@ -185,7 +187,8 @@ std::vector<Point> fair_jointly(const Soup& soup, int runs, double& seconds, std
   seconds = benchmark::median_seconds(runs, [&] {
     P = soup.points;
     iterations = PMP::constrained_fairing_of_interfaces(P, soup.triangles, soup.face_labels, cap,
-                                                        CFP::box_half_extents(half_of(soup.spacing)))
+                                                        CFP::vertex_box_half_extents_map(
+                                                          CGAL::make_property_map(soup.half_extents)))
                    .number_of_iterations;
   });
   return P;
@@ -247,7 +250,7 @@ void ball_case(const std::array<double, 3>& spacing, int runs)
   bool in_box = true;
   for(std::size_t v = 0; v < P.size(); ++v)
     for(int c = 0; c < 3; ++c)
-      in_box = in_box && std::abs(P[v][c] - soup.points[v][c]) <= soup.spacing[std::size_t(c)] / 2;
+      in_box = in_box && std::abs(P[v][c] - soup.points[v][c]) <= soup.half_extents[v][std::size_t(c)];
 
   const auto raw = ball.distances(soup, soup.points), lap = ball.distances(soup, best_L), ours = ball.distances(soup, P);
   std::cout << "ball cut by a plane, " << size[0] << " x " << size[1] << " x " << size[2] << " voxels of " << spacing[0]

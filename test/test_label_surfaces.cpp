@@ -3,17 +3,21 @@
 //
 // Multi-label surface nets and each label's surface, on label maps made here: three labels of a
 // ball (two halves and a cap, which meet along triple lines and at points where four labels meet,
-// the outside included), a label against the array's side, and labels whose voxels touch only
-// along an edge or at a corner; cubic voxels and 1 x 1 x 3 ones. Checked:
-//  - every point is the centre of its dual cell, and each triangle separates its two labels with
-//    its normal from the first into the second (a point just behind it lies in a voxel of the
-//    first label, just in front of it in one of the second);
+// the outside included), a label against the array's side, labels whose voxels touch only along
+// an edge or at a corner, in every orientation, and worst cases: checkerboards of two and three
+// labels, one-voxel tubes along every diagonal, tilted one-voxel sheets, a label that meets itself
+// around an edge, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
+//  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
+//    and no two boxes meet; the point of a cell of one point is its centre;
+//  - each triangle separates its two labels with its normal from the first into the second (a
+//    point just behind it lies in a voxel of the first label, just in front of it in one of the
+//    second);
 //  - each label's surface is a closed, valid, outward-oriented mesh (positive volume) whose
 //    vertices are the shared points bit for bit, made of every triangle that names the label;
-//    its triangles meet only at copies of a point where it was split, and the ball's halves
-//    not at all;
-//  - a label whose voxels touch along an edge or at a corner gets a manifold surface of two
-//    sheets; a background other than 0 gets no surface of its own.
+//  - on every map but random voxels of three labels or more: each label's surface is a manifold
+//    as the nets make it (label_surface() splits no point) and does not intersect itself;
+//  - a label whose voxels touch along an edge or at a corner gets two sheets; a background other
+//    than 0 gets no surface of its own.
 
 #include "test_support.h"
 
@@ -25,13 +29,17 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
+#include <functional>
+#include <random>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -40,6 +48,7 @@ using test::Mesh;
 using test::Point;
 using Triangle = std::array<std::size_t, 3>;
 using Label = std::int16_t;
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
 
 Eigen::Vector3d vec(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
@@ -48,6 +57,7 @@ struct Label_map
   std::array<std::size_t, 3> size;
   std::array<double, 3> spacing, origin;
   std::vector<Label> labels;
+  std::set<Label> two_sheets; // labels whose voxels touch only along an edge or at a corner
 
   Label at(long i, long j, long k) const
   {
@@ -70,7 +80,7 @@ struct Label_map
 // touch at a corner).
 Label_map phantom(std::array<double, 3> spacing)
 {
-  Label_map map{{28, 28, 28 / std::size_t(spacing[2])}, spacing, {0, 0, 0}, {}};
+  Label_map map{{28, 28, 28 / std::size_t(spacing[2])}, spacing, {0, 0, 0}, {}, {}};
   map.labels.assign(map.size[0] * map.size[1] * map.size[2], 0);
   const double c = 13.5;
   for(std::size_t i = 0; i < map.size[0]; ++i)
@@ -94,39 +104,86 @@ Label_map phantom(std::array<double, 3> spacing)
   set(25, 3, 2, 5);
   set(24, 24, 2, 6);
   set(25, 25, 3, 6);
+  map.two_sheets = {5, 6};
   return map;
 }
 
-void check(const Label_map& map, Label background)
+// How many times the closed mesh winds around q: its triangles' solid angles seen from q, over 4 pi
+// (A. Van Oosterom and J. Strackee, 1983).
+double winding_number(const Mesh& mesh, const Eigen::Vector3d& q)
+{
+  double sum = 0;
+  for(auto f : mesh.faces())
+  {
+    Eigen::Vector3d r[3];
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      r[k++] = vec(mesh.point(v)) - q;
+    const double l0 = r[0].norm(), l1 = r[1].norm(), l2 = r[2].norm();
+    sum += 2 * std::atan2(r[0].dot(r[1].cross(r[2])),
+                          l0 * l1 * l2 + r[0].dot(r[1]) * l2 + r[1].dot(r[2]) * l0 + r[2].dot(r[0]) * l1);
+  }
+  return sum / (4 * CGAL_PI);
+}
+
+void check(const Label_map& map, Label background, bool manifold)
 {
   std::vector<Point> points;
   std::vector<Triangle> triangles;
   std::vector<std::array<Label, 2> > face_labels;
-  PMP::label_surface_nets(map.labels.data(), map.size, map.spacing, map.origin, points, triangles, face_labels,
+  std::vector<std::array<double, 3> > half;
+  PMP::label_surface_nets(map.labels.data(), map.size, map.spacing, map.origin, points, triangles, face_labels, half,
                           background);
-  CHECK(!triangles.empty() && triangles.size() == face_labels.size());
+  CHECK(!triangles.empty() && triangles.size() == face_labels.size() && half.size() == points.size());
 
-  // Points at cell centres: half a voxel off the voxel grid on every axis.
-  for(const Point& p : points)
-    for(int c = 0; c < 3; ++c)
+  // Each box in its dual cell (which spans [c - 1, c] in voxels from the origin), the margin
+  // from its sides; the boxes apart.
+  std::vector<Box> boxes;
+  std::vector<bool> at_centre(points.size());
+  for(std::size_t p = 0; p < points.size(); ++p)
+  {
+    double lo[3], hi[3];
+    bool centre = true;
+    for(std::size_t c = 0; c < 3; ++c)
     {
-      const double t = (p[c] - map.origin[std::size_t(c)]) / map.spacing[std::size_t(c)];
-      CHECK(t - std::floor(t) == 0.5);
+      const double s = map.spacing[c], t = (points[p][int(c)] - map.origin[c]) / s, cell = std::floor(t);
+      lo[c] = points[p][int(c)] - half[p][c];
+      hi[c] = points[p][int(c)] + half[p][c];
+      CHECK(half[p][c] > 0);
+      CHECK((lo[c] - map.origin[c]) / s >= cell + PMP::label_box_margin - 1e-12);
+      CHECK((hi[c] - map.origin[c]) / s <= cell + 1 - PMP::label_box_margin + 1e-12);
+      centre = centre && t - cell == 0.5;
     }
+    at_centre[p] = centre;
+    if(!centre) // a part of the cell
+      CHECK(half[p][0] < map.spacing[0] * (0.5 - PMP::label_box_margin) ||
+            half[p][1] < map.spacing[1] * (0.5 - PMP::label_box_margin) ||
+            half[p][2] < map.spacing[2] * (0.5 - PMP::label_box_margin));
+    boxes.emplace_back(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), p);
+  }
+  std::size_t meeting = 0;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box&, const Box&) { ++meeting; });
+  CHECK(meeting == 0);
+
   // Each triangle between its labels, its normal from the first into the second.
   const auto outside_is = [&](Label l) { return l == -1 ? background : l; };
   const double step = 0.25 * std::min({map.spacing[0], map.spacing[1], map.spacing[2]});
   for(std::size_t f = 0; f < triangles.size(); ++f)
   {
+    CHECK(face_labels[f][0] != face_labels[f][1]);
+    if(!(at_centre[triangles[f][0]] && at_centre[triangles[f][1]] && at_centre[triangles[f][2]]))
+      continue; // in a cell of several points: the volume of each sheet below tells
     const Eigen::Vector3d a = vec(points[triangles[f][0]]), b = vec(points[triangles[f][1]]),
                           c = vec(points[triangles[f][2]]);
     const Eigen::Vector3d n = (b - a).cross(c - a).normalized(), centroid = (a + b + c) / 3;
-    CHECK(face_labels[f][0] != face_labels[f][1]);
     CHECK(outside_is(map.at(centroid - step * n)) == face_labels[f][0]);
     CHECK(outside_is(map.at(centroid + step * n)) == face_labels[f][1]);
   }
 
-  for(Label label = 0; label <= 6; ++label)
+  std::set<Label> labels;
+  for(const auto& pair : face_labels)
+    labels.insert(pair.begin(), pair.end());
+  for(Label label : labels)
   {
     std::size_t naming = 0;
     for(const auto& pair : face_labels)
@@ -134,37 +191,121 @@ void check(const Label_map& map, Label background)
     Mesh mesh;
     std::vector<std::size_t> origin;
     const std::size_t made = PMP::label_surface(points, triangles, face_labels, label, mesh, &origin);
-    CHECK(made == naming && mesh.number_of_faces() == naming);
-    if(label == background)
-    {
-      CHECK(naming > 0); // the outside of every surface, with none of its own
+    CHECK(made == naming && mesh.number_of_faces() == naming && naming > 0);
+    if(label == background) // the outside of every surface, with none of its own
       continue;
-    }
-    CHECK(naming > 0);
     CHECK(CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_closed(mesh) && CGAL::is_triangle_mesh(mesh));
     CHECK(PMP::volume(mesh) > 0);
     CHECK(origin.size() == mesh.number_of_vertices());
     for(auto v : mesh.vertices())
       CHECK(origin[v.idx()] < points.size() && mesh.point(v) == points[origin[v.idx()]]);
-    if(label == 0) // the former outside: a box with the other labels' holes
-      continue;
-    const std::size_t sheets = PMP::connected_components(
-      mesh, mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first);
-    CHECK(sheets == (label >= 5 ? 2u : 1u));
-    // Triangles meet only where the surface was split: at copies of one point.
-    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > crossing;
-    PMP::self_intersections(mesh, std::back_inserter(crossing));
-    for(const auto& faces : crossing)
+    // Outward, sheet by sheet: on a small map, the surface winds once around each voxel centre
+    // of the label and not around the others; on a larger one, each sheet holds a triangle of
+    // cells of one point, whose side the voxels told, and its triangles are oriented alike.
+    auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:c", 0).first;
+    const std::size_t sheets = PMP::connected_components(mesh, component);
+    if(map.labels.size() <= 4096)
+      for(long i = 0; i < long(map.size[0]); ++i)
+        for(long j = 0; j < long(map.size[1]); ++j)
+          for(long k = 0; k < long(map.size[2]); ++k)
+          {
+            const Eigen::Vector3d q(map.origin[0] + double(i) * map.spacing[0],
+                                    map.origin[1] + double(j) * map.spacing[1],
+                                    map.origin[2] + double(k) * map.spacing[2]);
+            CHECK(std::abs(winding_number(mesh, q) - (map.at(i, j, k) == label ? 1 : 0)) < 0.5);
+          }
+    else
     {
-      bool touching = false;
-      for(auto u : CGAL::vertices_around_face(mesh.halfedge(faces.first), mesh))
-        for(auto w : CGAL::vertices_around_face(mesh.halfedge(faces.second), mesh))
-          touching = touching || mesh.point(u) == mesh.point(w);
-      CHECK(touching);
+      std::vector<bool> told(sheets, false);
+      std::size_t face = 0;
+      for(std::size_t f = 0; f < triangles.size(); ++f)
+        if(face_labels[f][0] == label || face_labels[f][1] == label)
+        {
+          const bool centres = at_centre[triangles[f][0]] && at_centre[triangles[f][1]] && at_centre[triangles[f][2]];
+          const std::size_t sheet = component[Mesh::Face_index(Mesh::size_type(face++))];
+          told[sheet] = told[sheet] || centres;
+        }
+      CHECK(std::find(told.begin(), told.end(), false) == told.end());
     }
-    if(label <= 2)
-      CHECK(crossing.empty());
+    if(map.two_sheets.count(label) > 0)
+      CHECK(sheets == 2u);
+    if(!manifold)
+      continue;
+    std::sort(origin.begin(), origin.end());
+    CHECK(std::adjacent_find(origin.begin(), origin.end()) == origin.end());
+    CHECK(!PMP::does_self_intersect(mesh));
   }
+}
+
+Label_map generated(std::array<std::size_t, 3> size, std::array<double, 3> spacing,
+                    const std::function<Label(long, long, long)>& f)
+{
+  Label_map map{size, spacing, {0.5, -2, 3}, {}, {}};
+  for(std::size_t i = 0; i < size[0]; ++i)
+    for(std::size_t j = 0; j < size[1]; ++j)
+      for(std::size_t k = 0; k < size[2]; ++k)
+        map.labels.push_back(f(long(i), long(j), long(k)));
+  return map;
+}
+
+// The worst cases, each with whether its labels' surfaces are manifolds as the nets make them.
+std::vector<std::pair<Label_map, bool> > worst_cases()
+{
+  std::vector<std::pair<Label_map, bool> > cases;
+  const auto inside = [](long i, long j, long k, long n) {
+    return i >= 2 && j >= 2 && k >= 2 && i + 2 < n && j + 2 < n && k + 2 < n;
+  };
+  for(Label first : {0, 1})
+    cases.emplace_back(generated({10, 10, 10}, {1, 1, 1}, [&](long i, long j, long k) {
+                         return inside(i, j, k, 10) ? Label((i + j + k) % 2 + first) : Label(0);
+                       }),
+                       true);
+  cases.emplace_back(generated({10, 10, 10}, {1, 1, 1}, [&](long i, long j, long k) {
+                       return inside(i, j, k, 10) ? Label((i + 2 * j + k) % 3 + 1) : Label(0);
+                     }),
+                     true);
+  // One-voxel tubes along the four space diagonals and six face diagonals.
+  cases.emplace_back(generated({14, 14, 14}, {1, 1, 1}, [](long i, long j, long k) {
+                       const bool space = (i == j && j == k) || (i == j && j == 13 - k) || (i == 13 - j && j == k) ||
+                                          (13 - i == j && j == 13 - k);
+                       const bool face = (k == 3 && (i == j || i == 13 - j)) || (j == 4 && (i == k || i == 13 - k)) ||
+                                         (i == 10 && (j == k || j == 13 - k));
+                       return space ? Label(1) : face ? Label(2) : Label(0);
+                     }),
+                     true);
+  // Tilted one-voxel sheets, crossing.
+  cases.emplace_back(generated({16, 16, 16}, {1, 1, 1}, [](long i, long j, long k) {
+                       return long(0.3 * double(i) + 0.5 * double(j)) + 4 == k ? Label(1)
+                              : i + 2 * k == 24                                  ? Label(2)
+                                                                                 : Label(0);
+                     }),
+                     true);
+  // Pairs of voxels that touch along an edge (6 orientations) or at a corner (4), and a label
+  // that meets itself around an edge: two voxels diagonal in one layer, joined through the next.
+  Label_map contacts = generated({20, 12, 12}, {1, 1, 3}, [](long i, long j, long k) {
+                       const long d[10][3] = {{1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1}, {0, 1, 1},
+                                              {0, 1, -1}, {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1}};
+                       for(long c = 0; c < 10; ++c)
+                       {
+                         const long x = 2 + 3 * (c % 5), y = c < 5 ? 3 : 8, z = 5;
+                         if((i == x && j == y && k == z) || (i == x + d[c][0] && j == y + d[c][1] && k == z + d[c][2]))
+                           return Label(c + 1);
+                       }
+                       const bool around = (k == 9 && ((i == 9 && j == 9) || (i == 10 && j == 10))) ||
+                                           (k == 10 && i >= 9 && i <= 10 && j >= 9 && j <= 10 && !(i == 9 && j == 10));
+                       return around ? Label(11) : Label(0);
+                     });
+  contacts.two_sheets = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+  cases.emplace_back(contacts, true);
+  std::mt19937 random(7);
+  for(int labels : {2, 3, 5})
+    for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})
+    {
+      std::uniform_int_distribution<int> pick(0, labels - 1);
+      cases.emplace_back(generated({9, 9, 9}, spacing, [&](long, long, long) { return Label(pick(random)); }),
+                         labels == 2);
+    }
+  return cases;
 }
 
 int main()
@@ -172,11 +313,13 @@ int main()
   for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})
   {
     Label_map map = phantom(spacing);
-    check(map, 0);
+    check(map, 0, true);
     // Another background: label 3 becomes the outside, and 0 a label with its own surface.
     for(Label& l : map.labels)
       l = l == 3 ? 0 : l == 0 ? 3 : l;
-    check(map, 3);
+    check(map, 3, true);
   }
+  for(const auto& worst : worst_cases())
+    check(worst.first, 0, worst.second);
   return test::report("test_label_surfaces");
 }

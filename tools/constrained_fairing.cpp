@@ -340,17 +340,18 @@ int fair_label_map(const Options& options, const std::string& in)
   std::vector<K::Point_3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<std::array<std::int64_t, 2> > face_labels;
-  PMP::label_surface_nets(map.labels.data(), map.size, spacing, {0, 0, 0}, points, triangles, face_labels);
+  std::vector<std::array<double, 3> > half_extents;
+  PMP::label_surface_nets(map.labels.data(), map.size, spacing, {0, 0, 0}, points, triangles, face_labels, half_extents);
   if(triangles.empty())
     return fail(in + ": the label map holds nothing but the background label 0; nothing written");
   Progress progress;
-  const std::array<double, 3> half{spacing[0] / 2, spacing[1] / 2, spacing[2] / 2};
   const PMP::Constrained_fairing_result result = PMP::constrained_fairing_of_interfaces(
     points, triangles, face_labels, std::sqrt(spacing[0] * spacing[0] + spacing[1] * spacing[1] + spacing[2] * spacing[2]),
-    CFP::box_half_extents(half, CFP::iteration_callback(
-                                  std::ref(progress),
-                                  CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
-                                                                          : PMP::Constrained_fairing_objective::FAIREST))));
+    CFP::vertex_box_half_extents_map(
+      CGAL::make_property_map(half_extents),
+      CFP::iteration_callback(std::ref(progress),
+                              CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
+                                                                      : PMP::Constrained_fairing_objective::FAIREST))));
   progress.done();
   if(!result)
     return fail(result.message + "; nothing written");

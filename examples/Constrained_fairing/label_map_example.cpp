@@ -4,7 +4,7 @@
 // The surfaces of a label map, one closed surface per label with their interfaces shared: two
 // labels that fill a ball on either side of a tilted plane, inside a third, on slices 2 voxels
 // thick. Multi-label surface nets, all interfaces faired at once within the voxels, then each
-// label's surface, written as label_L.off. Fails unless every point stayed in its voxel box and
+// label's surface, written as label_L.off. Fails unless every point stayed in its box and
 // every label's surface is closed, outward and fairer than before.
 //
 //   label_map_example
@@ -50,12 +50,13 @@ int main()
   std::vector<K::Point_3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<std::array<std::uint8_t, 2> > face_labels;
-  PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels);
+  std::vector<std::array<double, 3> > half_extents;
+  PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, half_extents);
   const std::vector<K::Point_3> nets = points;
 
-  // Each point in its voxel box: half the spacing around its surface-nets position.
+  // Each point in its box: its dual cell, kept apart from the other points' boxes.
   const PMP::Constrained_fairing_result r = PMP::constrained_fairing_of_interfaces(
-    points, triangles, face_labels, 2.0, CFP::box_half_extents(std::array<double, 3>{0.5, 0.5, 1.0}));
+    points, triangles, face_labels, 2.0, CFP::vertex_box_half_extents_map(CGAL::make_property_map(half_extents)));
   if(!r)
   {
     std::cerr << "fairing failed: " << r.message << std::endl;
@@ -68,7 +69,7 @@ int main()
   bool ok = r.final_bending_energy < r.initial_bending_energy;
   for(std::size_t v = 0; v < points.size(); ++v)
     for(int c = 0; c < 3; ++c)
-      ok = ok && std::abs(points[v][c] - nets[v][c]) <= spacing[std::size_t(c)] / 2;
+      ok = ok && std::abs(points[v][c] - nets[v][c]) <= half_extents[v][std::size_t(c)];
 
   for(std::uint8_t label : {1, 2, 3})
   {

@@ -25,13 +25,13 @@ from ._errors import Defect, InputError
 from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length, set_max_threads
 from ._io import read_mesh, write_mesh
 from ._label_map_files import read_label_map
-from ._labels import LabelSurfaces, fair_interfaces, label_surfaces
+from ._labels import LABEL_BOX_MARGIN, LabelSurfaces, fair_interfaces, label_surfaces
 from ._report import Report, Status
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "Defect", "InputError", "LabelSurfaces", "Report", "Status", "estimate_noise_level", "fair",
+    "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "Report", "Status", "estimate_noise_level", "fair",
     "fair_files", "fair_interfaces", "label_surfaces", "max_threads", "mean_edge_length",
     "read_label_map", "read_mesh", "set_max_threads", "write_mesh",
 ]

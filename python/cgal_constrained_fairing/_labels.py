@@ -12,6 +12,11 @@ from ._errors import Defect, InputError
 from ._fairing import Progress, _Progress, call_options, result_of
 from ._report import Report
 
+#: The margin, a fraction of the voxel spacing, that every point's box keeps from the sides of its
+#: dual cell (``CGAL::Polygon_mesh_processing::label_box_margin``): the boxes of two points are
+#: at least twice this apart, so that no two points of a faired label map meet.
+LABEL_BOX_MARGIN: float = _core.label_box_margin
+
 
 @dataclass(frozen=True)
 class LabelSurfaces:
@@ -27,8 +32,12 @@ class LabelSurfaces:
         ``(m, 2)`` int64: the normal of face ``f`` points from the region of
         ``face_labels[f, 0]`` into that of ``face_labels[f, 1]``.
     unfaired_vertices : numpy.ndarray
-        ``(n, 3)`` float64, the surface-nets points: the centres of the voxel boxes in which the
+        ``(n, 3)`` float64, the surface-nets points: the centres of the boxes in which the
         faired points stay.
+    box_half_extents : numpy.ndarray
+        ``(n, 3)`` float64, the half-extents of each point's box (in the voxels' frame): its dual
+        cell shrunk by `LABEL_BOX_MARGIN` of the spacing, or a part of it where the cell holds
+        several sheets of a surface (``CGAL::Polygon_mesh_processing::label_surface_nets()``).
     report : Report or None
         What the fairing did; ``None`` when it was not asked for.
     labels : numpy.ndarray
@@ -39,6 +48,7 @@ class LabelSurfaces:
     faces: np.ndarray
     face_labels: np.ndarray
     unfaired_vertices: np.ndarray
+    box_half_extents: np.ndarray
     report: Optional[Report]
     labels: np.ndarray
 
@@ -46,9 +56,8 @@ class LabelSurfaces:
         """The closed surface of `label`, oriented outward, as ``(V, F)``.
 
         Its points are copies of `vertices`, bit for bit, so that two labels' surfaces fit
-        together exactly. Where the label's voxels touch only along an edge or at a corner the
-        surface is split there into sheets that touch (``CGAL::Polygon_mesh_processing::
-        label_surface()``).
+        together exactly. Where the label's voxels touch only along an edge or at a corner, its
+        sheets there have points of their own, kept apart by their boxes.
         """
         if label not in set(self.labels.tolist()):
             raise invalid(f"label {label!r} has no surface (labels: {self.labels.tolist()})")
@@ -70,9 +79,11 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     Multi-label surface nets (``CGAL::Polygon_mesh_processing::label_surface_nets()``): a point
     at the centre of each cube of 8 voxel centres whose labels differ, two triangles for each pair
     of neighbouring voxels with different labels. Then, with `fair`, all the interfaces are faired
-    at once (``constrained_fairing_of_interfaces()``): each point stays in its voxel box (half
-    the spacing around its surface-nets position, exactly in double), the interfaces stay shared,
-    and the junction lines where three labels meet are faired as curves.
+    at once (``constrained_fairing_of_interfaces()``): each point stays in its box (its dual cell
+    shrunk by `LABEL_BOX_MARGIN` of the spacing, or the part of it that its sheet occupies
+    where a label's voxels meet only along an edge or at a corner; exactly in double), the
+    interfaces stay shared, the surfaces never touch themselves or each other, and the junction
+    lines where three labels meet are faired as curves.
 
     Parameters
     ----------
@@ -148,7 +159,7 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     L = L.astype(np.int64)  # a copy: the user's array is never touched
     if labels_to_mesh is not None:
         L[~np.isin(L, np.asarray(labels_to_mesh, dtype=np.int64))] = background
-    V, F, FL = _core.label_surface_nets(np.ascontiguousarray(L), h.tolist(), o.tolist(), int(background))
+    V, F, FL, H = _core.label_surface_nets(np.ascontiguousarray(L), h.tolist(), o.tolist(), int(background))
     present = np.unique(FL)
     present = present[present != background]
     if F.shape[0] == 0:
@@ -157,11 +168,11 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     W = V.copy()
     if fair:
         cap = float(np.linalg.norm(h)) if epsilon is None else epsilon
-        W, report = fair_interfaces(V, F, FL, cap, box_half_extents=h / 2, objective=objective,
+        W, report = fair_interfaces(V, F, FL, cap, box_half_extents=H, objective=objective,
                                     max_iterations=max_iterations, progress=progress)
     if frame is not None:
         W, V, F = frame.to_world(W), frame.to_world(V), frame.faces(F)
-    return LabelSurfaces(W, F, FL, V, report, present)
+    return LabelSurfaces(W, F, FL, V, H, report, present)
 
 
 class _Frame:

@@ -354,7 +354,8 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
 using Label = std::int64_t;
 using Label_array = py::array_t<Label, py::array::c_style>;
 
-// label_surface_nets() on a C-contiguous 3-D array of labels, as (points, triangles, labels).
+// label_surface_nets() on a C-contiguous 3-D array of labels, as (points, triangles, labels,
+// box half-extents).
 py::tuple label_surface_nets(const Label_array& labels, const std::array<double, 3>& spacing,
                              const std::array<double, 3>& origin, Label background)
 {
@@ -363,22 +364,27 @@ py::tuple label_surface_nets(const Label_array& labels, const std::array<double,
   std::vector<Point> points;
   std::vector<std::array<std::int64_t, 3> > triangles;
   std::vector<std::array<Label, 2> > face_labels;
+  std::vector<std::array<double, 3> > half_extents;
   {
     py::gil_scoped_release release;
-    PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, background);
+    PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, half_extents,
+                            background);
   }
-  Float_array V({py::ssize_t(points.size()), py::ssize_t(3)});
+  Float_array V({py::ssize_t(points.size()), py::ssize_t(3)}), H({py::ssize_t(points.size()), py::ssize_t(3)});
   Index_array F({py::ssize_t(triangles.size()), py::ssize_t(3)});
   Label_array L({py::ssize_t(face_labels.size()), py::ssize_t(2)});
   for(std::size_t i = 0; i < points.size(); ++i)
     for(int c = 0; c < 3; ++c)
+    {
       V.mutable_data()[3 * i + std::size_t(c)] = points[i][c];
+      H.mutable_data()[3 * i + std::size_t(c)] = half_extents[i][std::size_t(c)];
+    }
   for(std::size_t f = 0; f < triangles.size(); ++f)
   {
     std::copy(triangles[f].begin(), triangles[f].end(), F.mutable_data() + 3 * f);
     std::copy(face_labels[f].begin(), face_labels[f].end(), L.mutable_data() + 2 * f);
   }
-  return py::make_tuple(V, F, L);
+  return py::make_tuple(V, F, L, H);
 }
 
 // A multi-label soup of the arrays, which the Python layer has checked for shape.
@@ -670,6 +676,7 @@ PYBIND11_MODULE(_core, m)
     },
     py::arg("text"));
   m.attr("default_epsilon") = FE::default_epsilon_text;
+  m.attr("label_box_margin") = PMP::label_box_margin;
   m.def("label_surface_nets", &label_surface_nets, py::arg("labels"), py::arg("spacing"), py::arg("origin"),
         py::arg("background"));
   m.def("fair_interfaces", &fair_interfaces, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),

@@ -38,11 +38,19 @@ def test_surfaces_closed_shared_and_in_their_voxels(spacing):
     assert np.array_equal(labels, before)
     assert r.labels.tolist() == [1, 2, 3]
     assert r.vertices.dtype == np.float64 and r.faces.dtype == np.int64 and r.face_labels.shape == (len(r.faces), 2)
-    # The surface nets' points are at cube centres, and the faired ones stay in their boxes.
+    # Each box in its dual cell, the margin from its sides; a whole cell's point at its centre;
+    # the faired points in their boxes.
     h = np.array(spacing, dtype=float)
-    t = (r.unfaired_vertices - (0.5, -2, 3)) / h
-    assert np.array_equal(t - np.floor(t), np.full_like(t, 0.5))
-    assert (np.abs(r.vertices - r.unfaired_vertices) <= h / 2).all()
+    H = r.box_half_extents
+    assert H.shape == r.vertices.shape and (H > 0).all()
+    lo = (r.unfaired_vertices - H - (0.5, -2, 3)) / h
+    hi = (r.unfaired_vertices + H - (0.5, -2, 3)) / h
+    cell = np.floor((r.unfaired_vertices - (0.5, -2, 3)) / h)
+    assert (lo >= cell + cf.LABEL_BOX_MARGIN - 1e-12).all() and (hi <= cell + 1 - cf.LABEL_BOX_MARGIN + 1e-12).all()
+    whole = np.isclose(H, h * (0.5 - cf.LABEL_BOX_MARGIN), rtol=0, atol=1e-12).all(axis=1)
+    t = (r.unfaired_vertices[whole] - (0.5, -2, 3)) / h
+    assert whole.mean() > 0.9 and np.array_equal(t - np.floor(t), np.full_like(t, 0.5))
+    assert (np.abs(r.vertices - r.unfaired_vertices) <= H).all()
     assert r.report is not None and r.report.final_energy < r.report.initial_energy
     rows = {tuple(p) for p in r.vertices.tolist()}
     for label in r.labels:
@@ -84,7 +92,7 @@ def test_fair_interfaces_is_the_fairing_of_label_surfaces():
     nets = cf.label_surfaces(labels, fair=False)
     faired = cf.label_surfaces(labels)
     V, F, FL = nets.vertices.copy(), nets.faces.copy(), nets.face_labels.copy()
-    W, report = cf.fair_interfaces(V, F, FL, box_half_extents=(0.5, 0.5, 0.5))
+    W, report = cf.fair_interfaces(V, F, FL, np.sqrt(3), box_half_extents=nets.box_half_extents)
     assert np.array_equal(W, faired.vertices)
     assert np.array_equal(V, nets.vertices) and np.array_equal(F, nets.faces) and np.array_equal(FL, nets.face_labels)
     assert report.number_of_fixed_vertices > 0  # where four labels meet

@@ -4,10 +4,18 @@
 #ifndef CGAL_PMP_LABEL_SURFACE_NETS_H
 #define CGAL_PMP_LABEL_SURFACE_NETS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_maps/Dual_cell.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -16,33 +24,50 @@ namespace Polygon_mesh_processing {
 /*!
 \ingroup PkgConstrainedFairingRef
 
+The margin, as a fraction of the voxel spacing, that `label_surface_nets()` keeps between a point's
+box and the sides of its dual cell: the boxes of two points are at least twice this apart, so
+that no two points of a faired label map meet.
+*/
+constexpr double label_box_margin = 0.05;
+
+/*!
+\ingroup PkgConstrainedFairingRef
+
 \brief extracts the interfaces between the labels of a 3-D label map as one triangle soup:
-multi-label surface nets.
+multi-label surface nets, each point with the box the fairing keeps it in.
 
 `labels` holds `size[0] * size[1] * size[2]` voxels in C order: voxel `(i, j, k)` is
 `labels[(i * size[1] + j) * size[2] + k]` (a C-contiguous numpy array `labels[i, j, k]`), and its
 centre is at `origin + (i, j, k) * spacing`, coordinates in the array's axis order. Voxels
 outside the array count as `background`.
 
-- A point is put at the centre of each dual cell (the cube spanned by 8 neighbouring voxel
-  centres) whose voxels do not all have the same label. Each point stays in its dual cell, a box
-  of half-extents `spacing / 2` around it: the bound that `constrained_fairing()`'s
-  `box_half_extents` and the fairing of interfaces use. Points are numbered in the order of
-  their cells, `(i, j, k)` with `k` fastest.
-- For each pair of neighbouring voxels `a`, `b` with different labels, two triangles (the quad
-  of the four dual cells around their shared face) are added, with `face_labels` `{label(a),
-  label(b)}`: their normal points from `a`'s region into `b`'s. The interface between two
-  labels is so made of the same triangles for both, and a label's surface, the triangles that
-  name it, is closed. Triangles against `background` are made too: `background` is the outside
-  of the surfaces and gets none of its own.
+- The dual cells are the cubes spanned by 8 neighbouring voxel centres. For each pair of
+  neighbouring voxels `a`, `b` with different labels, two triangles (the quad of the four dual
+  cells around their shared face) are added, with `face_labels` `{label(a), label(b)}`: their
+  normal points from `a`'s region into `b`'s. The interface between two labels is so made of the
+  same triangles for both, and a label's surface, the triangles that name it, is closed.
+  Triangles against `background` are made too: `background` is the outside of the surfaces and
+  gets none of its own.
+- A dual cell whose voxels do not all have the same label gets a point at its centre, whose box
+  is the cell shrunk by `margin * spacing` on every side. Where a label's voxels meet only along
+  an edge or at a corner, the cell gets one point per sheet of the surface instead, each with a
+  box in the part of the cell its triangles occupy, also `margin * spacing` from the cell's
+  centre planes there, and at its centre: the voxels of the two diagonals around an edge are
+  never both joined; of two labels that alternate around an edge, the one whose voxels are joined
+  around it anyway is, else the smaller label. So every label's surface is a manifold (made by
+  `label_surface()` without splitting), and no two boxes meet: the points stay apart through any
+  fairing within their boxes. Points are numbered in the order of their cells, `(i, j, k)` with
+  `k` fastest, and within a cell by their first triangle.
 
-A label's surface may touch itself along an edge or at a point where its voxels touch only
-along an edge or at a corner: `label_surface()` splits it there.
+The boxes, `box_half_extents[p]` around `points[p]`, are those that
+`constrained_fairing_of_interfaces()` takes as `vertex_box_half_extents_map`. The choice is
+made from the labels alone: the same map gives the same soup whatever is done with it after.
 
 \tparam Label an integer type
 \tparam PointRange a `std::vector` of a point type constructible from three `double`
 \tparam TriangleRange a `std::vector` of `std::array<I, 3>`, `I` an integer type
 \tparam LabelPairRange a `std::vector` of `std::array<Label, 2>`
+\tparam BoxRange a `std::vector` of `std::array<double, 3>`
 
 \param labels the label map, `size[0] * size[1] * size[2]` values in C order
 \param size the number of voxels along each axis
@@ -51,17 +76,25 @@ along an edge or at a corner: `label_surface()` splits it there.
 \param points the points, appended to
 \param triangles the triangles, as indices into `points` counted from its size on entry
 \param face_labels the two labels of each triangle, one per triangle
+\param box_half_extents the half-extents of each point's box, one per point, appended to
 \param background the label of the outside, which gets no surface of its own
+\param margin the margin of the boxes, a fraction of the spacing in `[0, 0.25)`
+
+\pre `0 <= margin < 0.25`
 */
-template <typename Label, typename PointRange, typename TriangleRange, typename LabelPairRange>
+template <typename Label, typename PointRange, typename TriangleRange, typename LabelPairRange, typename BoxRange>
 void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& size,
                         const std::array<double, 3>& spacing, const std::array<double, 3>& origin,
                         PointRange& points, TriangleRange& triangles, LabelPairRange& face_labels,
-                        const Label background = Label(0))
+                        BoxRange& box_half_extents, const Label background = Label(0),
+                        const double margin = label_box_margin)
 {
   using Point = typename PointRange::value_type;
   using Point_index = typename TriangleRange::value_type::value_type;
+  using Cell = internal::Constrained_fairing::Dual_cell<Label>;
+  using Epick = Exact_predicates_inexact_constructions_kernel;
   using Signed = std::ptrdiff_t;
+  CGAL_precondition(margin >= 0 && margin < 0.25);
   const Signed n[3] = {Signed(size[0]), Signed(size[1]), Signed(size[2])};
   const auto label = [&](Signed i, Signed j, Signed k) {
     if(i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2])
@@ -70,72 +103,193 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   };
   // Dual cell c = (ci, cj, ck), each in [0, n], lies between voxels c - 1 and c on each axis.
   const std::size_t cells[3] = {size[0] + 1, size[1] + 1, size[2] + 1};
-  const auto cell_index = [&](const Signed c[3]) {
-    return (std::size_t(c[0]) * cells[1] + std::size_t(c[1])) * cells[2] + std::size_t(c[2]);
+  const auto cell_at = [&](const Signed c[3]) {
+    return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, margin);
   };
 
-  // f(a, b, quad) for each pair of neighbouring voxels a, b = a + e_axis with different labels,
-  // quad the four dual cells around their face, counterclockwise seen from b: the triangles
-  // (quad[0], quad[1], quad[2]) and (quad[0], quad[2], quad[3]) point from a into b.
-  const auto for_each_face = [&](const auto& f) {
-    for(int axis = 0; axis < 3; ++axis)
-    {
-      const int u = (axis + 1) % 3, w = (axis + 2) % 3; // (axis, u, w) is right-handed
-      Signed lo[3] = {0, 0, 0};
-      lo[axis] = -1;
-      Signed a[3];
-      for(a[0] = lo[0]; a[0] < n[0]; ++a[0])
-        for(a[1] = lo[1]; a[1] < n[1]; ++a[1])
-          for(a[2] = lo[2]; a[2] < n[2]; ++a[2])
-          {
-            Signed b[3] = {a[0], a[1], a[2]};
-            ++b[axis];
-            const Label la = label(a[0], a[1], a[2]), lb = label(b[0], b[1], b[2]);
-            if(la == lb)
-              continue;
-            std::array<std::size_t, 4> quad;
-            const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
-            for(int c = 0; c < 4; ++c)
-            {
-              Signed cell[3];
-              cell[axis] = b[axis];
-              cell[u] = a[u] + du[c];
-              cell[w] = a[w] + dw[c];
-              quad[std::size_t(c)] = cell_index(cell);
-            }
-            f(la, lb, quad);
-          }
-    }
-  };
-
-  // The cells that get a point, numbered in their order.
+  // The points, cell by cell, each at the centre of its box; the cells of more than one point are
+  // kept, in their order, with the point of each face's corner next to each of its dual edges.
   constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
-  std::vector<std::uint32_t> point_of_cell(cells[0] * cells[1] * cells[2], none);
-  for_each_face([&](Label, Label, const std::array<std::size_t, 4>& quad) {
-    for(std::size_t cell : quad)
-      point_of_cell[cell] = 0;
-  });
-  const std::size_t first = points.size();
+  std::vector<std::uint32_t> first_point(cells[0] * cells[1] * cells[2], none);
+  std::vector<std::pair<std::size_t, std::array<std::int8_t, 24> > > split;
+  std::vector<std::array<std::size_t, 3> > caps;
+  std::vector<std::array<Label, 2> > cap_labels;
+  const std::size_t first = points.size(), first_triangle = triangles.size(), first_box = box_half_extents.size();
   std::size_t cell = 0;
-  for(std::size_t ci = 0; ci < cells[0]; ++ci)
-    for(std::size_t cj = 0; cj < cells[1]; ++cj)
-      for(std::size_t ck = 0; ck < cells[2]; ++ck, ++cell)
-        if(point_of_cell[cell] != none)
+  Signed c[3];
+  for(c[0] = 0; c[0] <= n[0]; ++c[0])
+    for(c[1] = 0; c[1] <= n[1]; ++c[1])
+      for(c[2] = 0; c[2] <= n[2]; ++c[2], ++cell)
+      {
+        const Label l = label(c[0], c[1], c[2]);
+        bool uniform = true;
+        for(int o = 1; o < 8 && uniform; ++o)
+          uniform = label(c[0] - (o & 1), c[1] - ((o >> 1) & 1), c[2] - ((o >> 2) & 1)) == l;
+        if(uniform)
+          continue;
+        const Cell dual = cell_at(c);
+        first_point[cell] = static_cast<std::uint32_t>(points.size() - first);
+        if(dual.size() > 1)
         {
-          point_of_cell[cell] = static_cast<std::uint32_t>(points.size() - first);
-          points.push_back(Point(origin[0] + (double(ci) - 0.5) * spacing[0],
-                                 origin[1] + (double(cj) - 0.5) * spacing[1],
-                                 origin[2] + (double(ck) - 0.5) * spacing[2]));
+          split.emplace_back(cell, std::array<std::int8_t, 24>{});
+          for(int f = 0; f < 12; ++f)
+            for(int side = 0; side < 2; ++side)
+              split.back().second[std::size_t(2 * f + side)] = std::int8_t(dual.point(f, (f / 4 + 1 + side) % 3));
+          for(const auto& cap : dual.caps())
+          {
+            caps.push_back({});
+            for(int k = 0; k < 3; ++k)
+              caps.back()[std::size_t(k)] = first + first_point[cell] + std::size_t(cap[std::size_t(k)]);
+            cap_labels.push_back(dual.cap_labels());
+          }
         }
-  for_each_face([&](Label la, Label lb, const std::array<std::size_t, 4>& quad) {
-    std::array<std::size_t, 4> p;
-    for(int c = 0; c < 4; ++c)
-      p[std::size_t(c)] = first + point_of_cell[quad[std::size_t(c)]];
-    triangles.push_back({Point_index(p[0]), Point_index(p[1]), Point_index(p[2])});
-    triangles.push_back({Point_index(p[0]), Point_index(p[2]), Point_index(p[3])});
-    face_labels.push_back({la, lb});
-    face_labels.push_back({la, lb});
-  });
+        for(int s = 0; s < dual.size(); ++s)
+        {
+          double centre[3];
+          std::array<double, 3> half;
+          for(int a = 0; a < 3; ++a)
+          {
+            const double lo = dual.low(s, a), hi = dual.high(s, a);
+            centre[a] = origin[std::size_t(a)] + (double(c[a]) - 0.5 + 0.5 * (lo + hi)) * spacing[std::size_t(a)];
+            half[std::size_t(a)] = 0.5 * (hi - lo) * spacing[std::size_t(a)];
+          }
+          points.push_back(Point(centre[0], centre[1], centre[2]));
+          box_half_extents.push_back(half);
+        }
+      }
+
+  // For each pair of neighbouring voxels a, b = a + e_axis with different labels, the four dual
+  // cells around their face, counterclockwise seen from b; at each, the face's corner is one point
+  // or, where its two dual edges there have different points, both. The polygon is cut into
+  // triangles, pointing from a into b, by diagonals between opposite cells only: a diagonal
+  // between neighbouring cells could be an edge of other faces too. A quad gives (0, 1, 2) and
+  // (0, 2, 3).
+  std::vector<std::pair<std::size_t, int> > polygon; // (point, corner)
+  for(int axis = 0; axis < 3; ++axis)
+  {
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3; // (axis, u, w) is right-handed
+    Signed lo[3] = {0, 0, 0};
+    lo[axis] = -1;
+    Signed a[3];
+    for(a[0] = lo[0]; a[0] < n[0]; ++a[0])
+      for(a[1] = lo[1]; a[1] < n[1]; ++a[1])
+        for(a[2] = lo[2]; a[2] < n[2]; ++a[2])
+        {
+          Signed b[3] = {a[0], a[1], a[2]};
+          ++b[axis];
+          const Label la = label(a[0], a[1], a[2]), lb = label(b[0], b[1], b[2]);
+          if(la == lb)
+            continue;
+          polygon.clear();
+          const int du[4] = {0, 1, 1, 0}, dw[4] = {0, 0, 1, 1};
+          for(int k = 0; k < 4; ++k)
+          {
+            Signed q[3];
+            q[axis] = b[axis];
+            q[u] = a[u] + du[k];
+            q[w] = a[w] + dw[k];
+            const std::size_t index = (std::size_t(q[0]) * cells[1] + std::size_t(q[1])) * cells[2] + std::size_t(q[2]);
+            const std::size_t base = first + first_point[index];
+            const auto found = std::lower_bound(split.begin(), split.end(), index,
+                                                [](const auto& x, std::size_t i) { return x.first < i; });
+            if(found == split.end() || found->first != index)
+            {
+              polygon.emplace_back(base, k);
+              continue;
+            }
+            // In the block of cell q, voxel a has offsets (0, 1 - du, 1 - dw); the quad arrives
+            // at corner k along u (k odd) or w and leaves along the other.
+            const int face = 4 * axis + (1 - du[k]) + 2 * (1 - dw[k]);
+            const int in = k % 2 == 1 ? 0 : 1;
+            const std::size_t from = base + std::size_t(found->second[std::size_t(2 * face + in)]),
+                              to = base + std::size_t(found->second[std::size_t(2 * face + 1 - in)]);
+            polygon.emplace_back(from, k);
+            if(to != from)
+              polygon.emplace_back(to, k);
+          }
+          while(polygon.size() >= 3)
+          {
+            const std::size_t m = polygon.size();
+            const auto ear_at = [&](std::size_t e) {
+              return std::array<std::size_t, 3>{polygon[(e + m - 1) % m].first, polygon[e].first,
+                                                polygon[(e + 1) % m].first};
+            };
+            const auto flat = [&](const std::array<std::size_t, 3>& t) {
+              const auto p = [&](std::size_t v) {
+                return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]),
+                                      CGAL::to_double(points[v][2]));
+              };
+              return CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
+            };
+            // Flat: the ear, or what a quad leaves after it.
+            const auto flat_ear = [&](std::size_t e) {
+              return flat(ear_at(e)) ||
+                     (m == 4 && flat({polygon[(e + 1) % m].first, polygon[(e + 2) % m].first,
+                                      polygon[(e + 3) % m].first}));
+            };
+            // The first ear whose diagonal joins opposite cells and whose triangle is not flat
+            // (points of split cells can line up), else the first of opposite cells.
+            std::size_t ear = m, any = m;
+            for(std::size_t e = 1; e <= m && ear == m; ++e)
+              if(m == 3 || (polygon[(e + m - 1) % m].second + 2) % 4 == polygon[(e + 1) % m].second)
+              {
+                if(any == m)
+                  any = e % m;
+                if(!flat_ear(e % m))
+                  ear = e % m;
+              }
+            ear = ear != m ? ear : any != m ? any : 1;
+            const std::array<std::size_t, 3> t = ear_at(ear);
+            triangles.push_back({Point_index(t[0]), Point_index(t[1]), Point_index(t[2])});
+            face_labels.push_back({la, lb});
+            polygon.erase(polygon.begin() + std::ptrdiff_t(ear));
+          }
+        }
+  }
+  for(std::size_t t = 0; t < caps.size(); ++t)
+  {
+    triangles.push_back({Point_index(caps[t][0]), Point_index(caps[t][1]), Point_index(caps[t][2])});
+    face_labels.push_back(cap_labels[t]);
+  }
+
+  // Points of split cells can line up (a staircase of cells split alike): the middle point of a
+  // triangle on a line moves off it by `margin` of the spacing along the axis the line runs least
+  // along, its box shrunk to stay within the one it had.
+  for(int round = 0; round < 4; ++round)
+  {
+    bool moved = false;
+    for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    {
+      std::array<Epick::Point_3, 3> p;
+      for(int k = 0; k < 3; ++k)
+      {
+        const auto& q = points[std::size_t(triangles[t][std::size_t(k)])];
+        p[std::size_t(k)] = Epick::Point_3(CGAL::to_double(q[0]), CGAL::to_double(q[1]), CGAL::to_double(q[2]));
+      }
+      if(!CGAL::collinear(p[0], p[1], p[2]))
+        continue;
+      int middle = 0;
+      while(middle < 2 && (p[std::size_t((middle + 1) % 3)] - p[std::size_t(middle)]) *
+                              (p[std::size_t((middle + 2) % 3)] - p[std::size_t(middle)]) > 0)
+        ++middle;
+      const Epick::Vector_3 line = p[std::size_t((middle + 2) % 3)] - p[std::size_t((middle + 1) % 3)];
+      std::size_t axis = 0;
+      for(std::size_t a = 1; a < 3; ++a)
+        if(std::abs(line[int(a)]) < std::abs(line[int(axis)]))
+          axis = a;
+      const std::size_t v = std::size_t(triangles[t][std::size_t(middle)]);
+      const double shift = margin * spacing[axis];
+      if(!(box_half_extents[first_box + v - first][axis] > 2 * shift))
+        continue;
+      double x[3] = {p[std::size_t(middle)].x(), p[std::size_t(middle)].y(), p[std::size_t(middle)].z()};
+      x[axis] += shift;
+      points[v] = Point(x[0], x[1], x[2]);
+      box_half_extents[first_box + v - first][axis] -= shift;
+      moved = true;
+    }
+    if(!moved)
+      break;
+  }
 }
 
 } // namespace Polygon_mesh_processing

@@ -12,7 +12,8 @@
 //  - build: the triangles, each oriented from its smaller label into its larger, and the hinges
 //    of each interface: an edge of exactly two of its triangles (where an interface meets
 //    itself along an edge, no hinge); the objective with the junction lines' term;
-//  - descend (Fairing_descent.h), report, and write back the points that moved.
+//  - descend (Fairing_descent.h), pull back the points of triangles that cross (Crossing_repair.h),
+//    report, and write back the points that moved.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_DRIVER_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_DRIVER_H
@@ -30,6 +31,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -223,6 +225,11 @@ Constrained_fairing_result fair_interfaces(PointRange& points, const TriangleRan
            X, result);
     if(!result)
       return;
+    if(repair_crossings(oriented, bound, moving, X0, X) > 0)
+    {
+      result.final_energy = energy.value(X);
+      result.final_bending_energy = energy.bending_energy(X);
+    }
     // report and write back
     count_bound(bound, moving, X, result);
     if constexpr(!is_default_parameter<NamedParameters, vertex_deviation_map_t>::value)

@@ -1,0 +1,631 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One dual cell of a label map's surface nets: its points, which corner of each interface face
+// each point is, and the box of each point. Decided from the voxels alone, so that every label's
+// surface is a manifold that never touches itself, whatever the fairing does inside the boxes.
+//
+// A dual cell is the cube spanned by 8 voxel centres, its block. The interface faces inside the
+// block (12 at most) meet at the cell's centre; on a small sphere around it, each face is an arc
+// between two of the 6 half-axes, and the 4 voxels around a half-axis form a ring. At a ring, the
+// faces join in one node, except where the ring's labels alternate X, Y, X, Y or X, Y, X, Z: there
+// one label is the bridge, its two voxels joined through the edge, and the faces are paired around
+// each voxel of the other diagonal, one node per pair. The bridge is the only repeated label, else
+// the label whose two voxels are joined anyway through the block of either cell of the ring (both
+// cannot be), else the smaller label. Seen from both cells of a ring the rule is the same.
+//
+// The faces joined through nodes make the cell's sheets; with one point per sheet, a label's
+// surface is a manifold at the point when one region of that label (its voxels joined by faces
+// and bridges) borders the sheet. Two regions of one label at one sheet (a junction that pinches
+// a label, as where a label's voxels meet at the centre with two other labels around), or a ring
+// whose two pairs are in one sheet here and in one sheet in the next cell too (a doubled edge),
+// would make the label's surface touch itself. There the sheet gets several points: each region of
+// the pinched label, each pair of the doubled ring (split in the ring's lower cell), seeds a point,
+// every other node of the sheet takes the point of the nearest seed, and a face whose two nodes
+// have different points gets both as its corner (its quad becomes a pentagon or more): the sheet
+// becomes a ridge of points instead of a cone, and the regions no longer meet.
+//
+// Each point's box: the cell shrunk by `margin` (a fraction of the spacing) on every side for a
+// cell of one point; with more, the half or whole of each axis that the quarters of its faces
+// (inside the cell) cover, two points whose boxes meet cut apart at a centre plane along the axis
+// where their faces lie farthest apart, and also `margin` from the centre planes where a box stops
+// there. The boxes of different points never meet, so no two points can meet. Points that cannot
+// be cut apart, or a sheet where the rule above has no answer, keep one point: its labels' surfaces
+// touch there, and label_surface() splits them.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// Face f of a block lies between voxels voxel_of_face(f, 0) and voxel_of_face(f, 1), which differ
+// along axis f / 4; voxel o has offsets (o & 1, (o >> 1) & 1, (o >> 2) & 1) from the block's first.
+inline int voxel_of_face(int f, int side)
+{
+  const int a = f / 4, u = (a + 1) % 3, w = (a + 2) % 3;
+  return (side << a) | ((f & 1) << u) | (((f >> 1) & 1) << w);
+}
+
+// The rings and nodes of a dual cell: what both cells of a ring agree on.
+template <typename Label>
+class Dual_cell_nodes
+{
+public:
+  // `label(d0, d1, d2)`: the label of the voxel at offset d (each in -1 .. 2) from the block's first.
+  template <typename LabelAt>
+  explicit Dual_cell_nodes(const LabelAt& label)
+  {
+    for(int o = 0; o < 8; ++o)
+      m_block[std::size_t(o)] = label(o & 1, (o >> 1) & 1, (o >> 2) & 1);
+    for(int o = 0; o < 8; ++o)
+      m_region[std::size_t(o)] = o;
+    for(int f = 0; f < 12; ++f)
+    {
+      m_node[std::size_t(f)] = {-1, -1};
+      const int x = voxel_of_face(f, 0), y = voxel_of_face(f, 1);
+      m_active[std::size_t(f)] = m_block[std::size_t(x)] != m_block[std::size_t(y)];
+      if(!m_active[std::size_t(f)])
+        join_regions(x, y);
+    }
+    for(int a = 0; a < 3; ++a)
+      for(int s = 0; s < 2; ++s)
+        make_ring(label, a, s);
+  }
+
+  Label label(int o) const { return m_block[std::size_t(o)]; }
+  bool uniform() const
+  {
+    for(int f = 0; f < 12; ++f)
+      if(m_active[std::size_t(f)])
+        return false;
+    return true;
+  }
+  bool active(int f) const { return m_active[std::size_t(f)]; }
+  // The node of face f at its dual edge along `axis` (not f / 4): 2 * ring + pair.
+  int node(int f, int axis) const { return m_node[std::size_t(f)][axis == (f / 4 + 1) % 3 ? 0 : 1]; }
+  // Ring 2 a + s: around the half-axis of axis a on side s; its faces in order around it.
+  const std::array<int, 4>& ring_faces(int ring) const { return m_ring_faces[std::size_t(ring)]; }
+  bool paired(int ring) const { return m_paired[std::size_t(ring)]; }
+  int region(int o) const
+  {
+    while(m_region[std::size_t(o)] != o)
+      o = m_region[std::size_t(o)];
+    return o;
+  }
+
+private:
+  void join_regions(int x, int y) { m_region[std::size_t(region(x))] = region(y); }
+
+  template <typename LabelAt>
+  void make_ring(const LabelAt& label, int a, int s)
+  {
+    const int ring_index = 2 * a + s, u = (a + 1) % 3, w = (a + 2) % 3;
+    const int pu[4] = {0, 1, 1, 0}, pw[4] = {0, 0, 1, 1};
+    std::array<Label, 4> ring, near, far;
+    std::array<int, 4> voxel, face;
+    for(int i = 0; i < 4; ++i)
+    {
+      int d[3];
+      d[a] = s, d[u] = pu[i], d[w] = pw[i];
+      voxel[std::size_t(i)] = d[0] | (d[1] << 1) | (d[2] << 2);
+      ring[std::size_t(i)] = m_block[std::size_t(voxel[std::size_t(i)])];
+      d[a] = 1 - s;
+      near[std::size_t(i)] = label(d[0], d[1], d[2]);
+      d[a] = s == 1 ? 2 : -1;
+      far[std::size_t(i)] = label(d[0], d[1], d[2]);
+    }
+    for(int i = 0; i < 4; ++i)
+    {
+      // The face between ring voxels i and i + 1, which differ along u (i even) or w.
+      const int b = i % 2 == 0 ? u : w, o = voxel[std::size_t(i)] & voxel[std::size_t((i + 1) % 4)];
+      face[std::size_t(i)] = 4 * b + ((o >> ((b + 1) % 3)) & 1) + 2 * ((o >> ((b + 2) % 3)) & 1);
+    }
+    m_ring_faces[std::size_t(ring_index)] = face;
+    int count = 0;
+    for(int i = 0; i < 4; ++i)
+      count += ring[std::size_t(i)] != ring[std::size_t((i + 1) % 4)];
+    const bool repeat02 = ring[0] == ring[2], repeat13 = ring[1] == ring[3];
+    m_paired[std::size_t(ring_index)] = count == 4 && (repeat02 || repeat13);
+    const auto set_node = [&](int i, int pair) {
+      const int f = face[std::size_t(i)];
+      if(m_active[std::size_t(f)])
+        m_node[std::size_t(f)][a == (f / 4 + 1) % 3 ? 0 : 1] = 2 * ring_index + pair;
+    };
+    if(!m_paired[std::size_t(ring_index)])
+    {
+      for(int i = 0; i < 4; ++i)
+        set_node(i, 0);
+      return;
+    }
+    // Voxels i and i + 2 of the ring joined through a layer beside it.
+    const auto joined = [&](const std::array<Label, 4>& layer, int i) {
+      const Label x = ring[std::size_t(i)];
+      return layer[std::size_t(i)] == x && layer[std::size_t(i + 2)] == x &&
+             (layer[std::size_t(i + 1)] == x || layer[std::size_t((i + 3) % 4)] == x);
+    };
+    bool bridge02;
+    if(repeat02 != repeat13)
+      bridge02 = repeat02;
+    else
+    {
+      const bool joined02 = joined(near, 0) || joined(far, 0), joined13 = joined(near, 1) || joined(far, 1);
+      bridge02 = joined02 != joined13 ? joined02 : ring[0] < ring[1];
+    }
+    const int k = bridge02 ? 0 : 1; // the bridge's voxels are k and k + 2
+    join_regions(voxel[std::size_t(k)], voxel[std::size_t(k + 2)]);
+    // Pair 0 around voxel k + 1 (faces k, k + 1), pair 1 around voxel k + 3 (faces k + 2, k + 3).
+    set_node(k, 0);
+    set_node(k + 1, 0);
+    set_node(k + 2, 1);
+    set_node((k + 3) % 4, 1);
+  }
+
+  std::array<Label, 8> m_block;
+  std::array<int, 8> m_region;
+  std::array<bool, 12> m_active;
+  std::array<std::array<int, 2>, 12> m_node;
+  std::array<std::array<int, 4>, 6> m_ring_faces;
+  std::array<bool, 6> m_paired;
+};
+
+template <typename Label>
+class Dual_cell
+{
+public:
+  // `label(d0, d1, d2)`: the label of the voxel at offset d (each in -2 .. 3) from the block's first.
+  template <typename LabelAt>
+  Dual_cell(const LabelAt& label, double margin) : m_nodes(label)
+  {
+    m_point.fill(-1);
+    if(m_nodes.uniform())
+      return;
+    const int none = -1;
+    // The sheets: the nodes joined through faces.
+    std::array<int, 12> sheet_of_node;
+    sheet_of_node.fill(none);
+    std::array<int, 12> parent;
+    for(int v = 0; v < 12; ++v)
+      parent[std::size_t(v)] = v;
+    const auto root = [&parent](int v) {
+      while(parent[std::size_t(v)] != v)
+        v = parent[std::size_t(v)];
+      return v;
+    };
+    for(int f = 0; f < 12; ++f)
+      if(m_nodes.active(f))
+      {
+        const int x = m_nodes.node(f, (f / 4 + 1) % 3), y = m_nodes.node(f, (f / 4 + 2) % 3);
+        parent[std::size_t(root(x))] = root(y);
+      }
+
+    // Seeds: ids planted on nodes. The ids planted on one node are one point; the ids of two
+    // pairs of a doubled ring, and of two regions of one label at one sheet, must stay apart.
+    std::vector<int> id_parent;
+    const auto id_root = [&id_parent](int i) {
+      while(id_parent[std::size_t(i)] != i)
+        i = id_parent[std::size_t(i)];
+      return i;
+    };
+    const auto new_id = [&id_parent] {
+      id_parent.push_back(int(id_parent.size()));
+      return int(id_parent.size()) - 1;
+    };
+    std::array<int, 12> seed;
+    seed.fill(none);
+    std::vector<std::array<int, 2> > apart;
+    const auto plant = [&](int node, int id) {
+      if(seed[std::size_t(node)] == none)
+        seed[std::size_t(node)] = id;
+      else
+        id_parent[std::size_t(id_root(id))] = id_root(seed[std::size_t(node)]);
+    };
+    // Doubled edges: a paired ring whose two pairs are one sheet here and in the next cell.
+    for(int a = 0; a < 3; ++a)
+    {
+      const int ring = 2 * a + 1;
+      if(!m_nodes.paired(ring) || root(2 * ring) != root(2 * ring + 1))
+        continue;
+      const Dual_cell_nodes<Label> next([&](int d0, int d1, int d2) {
+        int d[3] = {d0, d1, d2};
+        ++d[a];
+        return label(d[0], d[1], d[2]);
+      });
+      if(!next.paired(2 * a))
+        continue;
+      // The next cell sees the same ring as its ring 2 a, with the same pairs.
+      int x = -1, y = -1;
+      for(int f : next.ring_faces(2 * a))
+        if(next.active(f))
+        {
+          const int node = next.node(f, a);
+          (node % 2 == 0 ? x : y) = node;
+        }
+      if(x >= 0 && y >= 0 && next_sheets_joined(next, x, y))
+      {
+        const int p = new_id(), q = new_id();
+        plant(2 * ring, p);
+        plant(2 * ring + 1, q);
+        apart.push_back({p, q});
+      }
+    }
+    // Pinched labels: a label with two regions at one sheet; each region seeds the nodes of its
+    // faces there.
+    for(int o = 0; o < 8; ++o)
+    {
+      const Label pinched = m_nodes.label(o);
+      bool first_of_label = true;
+      for(int e = 0; e < o; ++e)
+        first_of_label = first_of_label && m_nodes.label(e) != pinched;
+      if(!first_of_label)
+        continue;
+      // The id of each (sheet, region) of the label.
+      std::array<std::array<int, 8>, 12> id_of;
+      for(auto& ids : id_of)
+        ids.fill(none);
+      for(int f = 0; f < 12; ++f)
+      {
+        if(!m_nodes.active(f))
+          continue;
+        const int sheet = root(m_nodes.node(f, (f / 4 + 1) % 3));
+        for(int side = 0; side < 2; ++side)
+          if(m_nodes.label(voxel_of_face(f, side)) == pinched)
+            id_of[std::size_t(sheet)][std::size_t(m_nodes.region(voxel_of_face(f, side)))] = 0;
+      }
+      for(auto& ids : id_of)
+      {
+        int regions = 0;
+        for(int id : ids)
+          regions += id != none;
+        if(regions < 2)
+        {
+          ids.fill(none);
+          continue;
+        }
+        std::vector<int> made;
+        for(int& id : ids)
+          if(id != none)
+          {
+            id = new_id();
+            for(int other : made)
+              apart.push_back({other, id});
+            made.push_back(id);
+          }
+      }
+      for(int f = 0; f < 12; ++f)
+      {
+        if(!m_nodes.active(f))
+          continue;
+        const int first = m_nodes.node(f, (f / 4 + 1) % 3), second = m_nodes.node(f, (f / 4 + 2) % 3);
+        for(int side = 0; side < 2; ++side)
+          if(m_nodes.label(voxel_of_face(f, side)) == pinched)
+          {
+            const int id = id_of[std::size_t(root(first))][std::size_t(m_nodes.region(voxel_of_face(f, side)))];
+            if(id != none)
+              plant(first, id), plant(second, id);
+          }
+      }
+    }
+    bool conflict = false;
+    for(const auto& pair : apart)
+      conflict = conflict || id_root(pair[0]) == id_root(pair[1]);
+    int seeds = 0;
+    std::vector<int> number(id_parent.size(), none);
+    for(int v = 0; v < 12; ++v)
+      if(seed[std::size_t(v)] != none)
+      {
+        int& n = number[std::size_t(id_root(seed[std::size_t(v)]))];
+        if(n == none)
+          n = seeds++;
+        seed[std::size_t(v)] = n;
+      }
+
+    // Every node takes a point: its seed's, the nearest seed's in its sheet (breadth first), or
+    // its sheet's own.
+    std::array<int, 12> point_of_node;
+    point_of_node.fill(none);
+    if(!conflict && seeds > 0)
+    {
+      std::vector<int> queue;
+      for(int v = 0; v < 12; ++v)
+        if(seed[std::size_t(v)] != none)
+          point_of_node[std::size_t(v)] = seed[std::size_t(v)], queue.push_back(v);
+      for(std::size_t q = 0; q < queue.size(); ++q)
+        for(int f = 0; f < 12; ++f)
+        {
+          if(!m_nodes.active(f))
+            continue;
+          const int x = m_nodes.node(f, (f / 4 + 1) % 3), y = m_nodes.node(f, (f / 4 + 2) % 3);
+          const int from = queue[q], to = x == from ? y : y == from ? x : none;
+          if(to != none && point_of_node[std::size_t(to)] == none)
+            point_of_node[std::size_t(to)] = point_of_node[std::size_t(from)], queue.push_back(to);
+        }
+    }
+    // Sheets without seeds, and all sheets on a conflict, get one point of their own; then the
+    // points are numbered by their first face.
+    for(int v = 0; v < 12; ++v)
+      if(point_of_node[std::size_t(v)] == none)
+        point_of_node[std::size_t(v)] = (conflict ? 0 : seeds) + root(v);
+    number_points(point_of_node);
+    if(seeds > 0 && !conflict && !close_ridges())
+    {
+      for(int v = 0; v < 12; ++v)
+        point_of_node[std::size_t(v)] = root(v);
+      number_points(point_of_node);
+      m_caps.clear();
+    }
+    make_boxes(margin);
+  }
+
+  // The number of points.
+  int size() const { return m_count; }
+  // The point of face f's corner at this cell next to its dual edge along `axis` (not f / 4);
+  // -1 where face f has one label on both sides.
+  int point(int f, int axis) const
+  {
+    return m_point[std::size_t(3 * f + (axis == (f / 4 + 1) % 3 ? 0 : 1))];
+  }
+  // The triangles that cap the cell's ridges, as points of the cell, with the labels on their two
+  // sides: the normal of (p, q, r) points from the region of the first label into the second's.
+  const std::vector<std::array<int, 3> >& caps() const { return m_caps; }
+  const std::array<Label, 2>& cap_labels() const { return m_cap_labels; }
+  // Point p's box, relative to the cell's centre in spacings along axis c.
+  double low(int p, int c) const { return m_low[std::size_t(p)][std::size_t(c)]; }
+  double high(int p, int c) const { return m_high[std::size_t(p)][std::size_t(c)]; }
+
+private:
+  // Whether nodes x and y of a neighbour are in one of its sheets.
+  static bool next_sheets_joined(const Dual_cell_nodes<Label>& next, int x, int y)
+  {
+    std::array<int, 12> parent;
+    for(int v = 0; v < 12; ++v)
+      parent[std::size_t(v)] = v;
+    const auto root = [&parent](int v) {
+      while(parent[std::size_t(v)] != v)
+        v = parent[std::size_t(v)];
+      return v;
+    };
+    for(int f = 0; f < 12; ++f)
+      if(next.active(f))
+        parent[std::size_t(root(next.node(f, (f / 4 + 1) % 3)))] = root(next.node(f, (f / 4 + 2) % 3));
+    return root(x) == root(y);
+  }
+
+  // Face f's corner as its polygon runs through it (Label_surface_nets.h: counterclockwise seen
+  // from its second voxel): from the point next to the edge it arrives by to the one it leaves by.
+  std::array<int, 2> corner(int f) const
+  {
+    const int a = f / 4, u = (a + 1) % 3, w = (a + 2) % 3, o = voxel_of_face(f, 0);
+    const int du = 1 - ((o >> u) & 1), dw = 1 - ((o >> w) & 1);
+    const bool odd = du != dw; // corners 1 and 3 of (0, 0), (1, 0), (1, 1), (0, 1)
+    const int in = odd ? u : w, out = odd ? w : u;
+    return {point(f, in), point(f, out)};
+  }
+
+  // Whether each label's faces that have two points as their corner pair up: two on each such
+  // segment, so that its surface stays closed across the segment.
+  bool ridges_closed() const
+  {
+    for(int f = 0; f < 12; ++f)
+    {
+      if(!m_nodes.active(f))
+        continue;
+      const int p = m_point[std::size_t(3 * f)], q = m_point[std::size_t(3 * f + 1)];
+      if(p == q)
+        continue;
+      for(int side = 0; side < 2; ++side)
+      {
+        const Label l = m_nodes.label(voxel_of_face(f, side));
+        int count = 0;
+        for(int g = 0; g < 12; ++g)
+        {
+          if(!m_nodes.active(g))
+            continue;
+          const int r = m_point[std::size_t(3 * g)], t = m_point[std::size_t(3 * g + 1)];
+          count += ((r == p && t == q) || (r == q && t == p)) &&
+                   (m_nodes.label(voxel_of_face(g, 0)) == l || m_nodes.label(voxel_of_face(g, 1)) == l);
+        }
+        if(count != 2)
+          return false;
+      }
+    }
+    return true;
+  }
+
+  // Whether each label's surface stays closed across the segments where a face's corner is two
+  // points: two of its faces on each segment, or else, where the faces on segments are all of one
+  // interface, the holes they leave (the segments each used once) capped by triangles of that
+  // interface fanned around each loop.
+  bool close_ridges()
+  {
+    m_caps.clear();
+    if(ridges_closed())
+      return true;
+    std::vector<std::array<int, 2> > once; // directed from the smaller label into the larger
+    bool one_interface = true;
+    std::array<Label, 2> interface{};
+    for(int f = 0; f < 12; ++f)
+    {
+      if(!m_nodes.active(f))
+        continue;
+      std::array<int, 2> e = corner(f);
+      if(e[0] == e[1])
+        continue;
+      std::array<Label, 2> sides = {m_nodes.label(voxel_of_face(f, 0)), m_nodes.label(voxel_of_face(f, 1))};
+      if(sides[1] < sides[0])
+        std::swap(sides[0], sides[1]), std::swap(e[0], e[1]);
+      one_interface = one_interface && (once.empty() || sides == interface);
+      interface = sides;
+      const auto reverse = std::find(once.begin(), once.end(), std::array<int, 2>{e[1], e[0]});
+      if(reverse != once.end())
+        once.erase(reverse);
+      else
+        once.push_back(e);
+    }
+    if(once.empty())
+      return true;
+    if(!one_interface)
+      return false;
+    // The holes' loops: each segment used once, followed head to tail; the cap runs against them.
+    while(!once.empty())
+    {
+      std::vector<int> loop = {once.front()[1], once.front()[0]};
+      once.erase(once.begin());
+      while(loop.back() != loop.front())
+      {
+        const auto next = std::find_if(once.begin(), once.end(),
+                                       [&](const std::array<int, 2>& e) { return e[1] == loop.back(); });
+        if(next == once.end())
+          return false;
+        loop.push_back((*next)[0]);
+        once.erase(next);
+      }
+      loop.pop_back();
+      for(std::size_t k = 1; k + 1 < loop.size(); ++k)
+        m_caps.push_back({loop[0], loop[k], loop[k + 1]});
+    }
+    m_cap_labels = interface;
+    return true;
+  }
+
+  // Points numbered 0, 1, ... by the first face (and its first corner) that has them.
+  void number_points(const std::array<int, 12>& point_of_node)
+  {
+    std::array<int, 40> number;
+    number.fill(-1);
+    m_count = 0;
+    for(int f = 0; f < 12; ++f)
+    {
+      if(!m_nodes.active(f))
+        continue;
+      for(int side = 0; side < 2; ++side)
+      {
+        const int axis = (f / 4 + 1 + side) % 3;
+        int& n = number[std::size_t(point_of_node[std::size_t(m_nodes.node(f, axis))])];
+        if(n < 0)
+          n = m_count++;
+        m_point[std::size_t(3 * f + side)] = n;
+      }
+    }
+  }
+
+  void make_boxes(double margin)
+  {
+    // Which halves (bit 0 lower, bit 1 upper) of each axis the point's faces cover, and where
+    // they lie: the faces whose corner is the point alone, else all that touch it.
+    std::vector<std::array<int, 3> > halves(std::size_t(m_count), std::array<int, 3>{0, 0, 0});
+    std::vector<std::array<double, 3> > centroid(std::size_t(m_count), std::array<double, 3>{0, 0, 0});
+    std::vector<bool> alone(std::size_t(m_count), false);
+    for(int f = 0; f < 12; ++f)
+      if(m_nodes.active(f) && m_point[std::size_t(3 * f)] == m_point[std::size_t(3 * f + 1)])
+        alone[std::size_t(m_point[std::size_t(3 * f)])] = true;
+    for(int f = 0; f < 12; ++f)
+    {
+      if(!m_nodes.active(f))
+        continue;
+      const int p = m_point[std::size_t(3 * f)], q = m_point[std::size_t(3 * f + 1)];
+      for(int side = 0; side < (p == q ? 1 : 2); ++side)
+      {
+        const int point = side == 0 ? p : q;
+        if(alone[std::size_t(point)] != (p == q))
+          continue;
+        const int a = f / 4, o = voxel_of_face(f, 0);
+        for(int c = 0; c < 3; ++c)
+          if(c != a)
+          {
+            const int upper = (o >> c) & 1;
+            halves[std::size_t(point)][std::size_t(c)] |= upper ? 2 : 1;
+            centroid[std::size_t(point)][std::size_t(c)] += upper ? 1 : -1;
+          }
+      }
+    }
+    for(auto& h : halves)
+      for(int& axis : h)
+        if(axis == 0)
+          axis = 3;
+    if(m_count == 1)
+      halves[0] = {3, 3, 3};
+    // Boxes that meet are cut apart, at the axis where the two lie farthest apart.
+    for(int x = 0; x < m_count; ++x)
+      for(int y = x + 1; y < m_count; ++y)
+      {
+        bool meet = true;
+        for(std::size_t c = 0; c < 3; ++c)
+          meet = meet && (halves[std::size_t(x)][c] & halves[std::size_t(y)][c]) != 0;
+        if(!meet)
+          continue;
+        int best = -1;
+        double apart = -1;
+        bool x_lower = true;
+        for(std::size_t c = 0; c < 3; ++c)
+        {
+          const double d = centroid[std::size_t(y)][c] - centroid[std::size_t(x)][c];
+          const int hx = halves[std::size_t(x)][c], hy = halves[std::size_t(y)][c];
+          if((hx & 1) && (hy & 2) && d >= 0 && d > apart)
+            best = int(c), apart = d, x_lower = true;
+          if((hx & 2) && (hy & 1) && -d > apart)
+            best = int(c), apart = -d, x_lower = false;
+        }
+        if(best < 0)
+        {
+          merge(x, y);
+          make_boxes(margin);
+          return;
+        }
+        halves[std::size_t(x)][std::size_t(best)] = x_lower ? 1 : 2;
+        halves[std::size_t(y)][std::size_t(best)] = x_lower ? 2 : 1;
+      }
+    m_low.assign(std::size_t(m_count), {});
+    m_high.assign(std::size_t(m_count), {});
+    for(int p = 0; p < m_count; ++p)
+      for(std::size_t c = 0; c < 3; ++c)
+      {
+        const int h = halves[std::size_t(p)][c];
+        m_low[std::size_t(p)][c] = (h & 1) ? -0.5 + margin : margin;
+        m_high[std::size_t(p)][c] = (h & 2) ? 0.5 - margin : -margin;
+      }
+  }
+
+  // Point y becomes point x; the points after y are renumbered.
+  void merge(int x, int y)
+  {
+    const auto renumber = [x, y](int& p) {
+      if(p == y)
+        p = x;
+      else if(p > y)
+        --p;
+    };
+    for(int& p : m_point)
+      renumber(p);
+    for(auto& cap : m_caps)
+      for(int& p : cap)
+        renumber(p);
+    m_caps.erase(std::remove_if(m_caps.begin(), m_caps.end(),
+                                [](const std::array<int, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
+                 m_caps.end());
+    --m_count;
+  }
+
+  Dual_cell_nodes<Label> m_nodes;
+  int m_count = 0;
+  std::array<int, 36> m_point;
+  std::vector<std::array<double, 3> > m_low, m_high;
+  std::vector<std::array<int, 3> > m_caps;
+  std::array<Label, 2> m_cap_labels{};
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H

@@ -1,0 +1,177 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Crossings: two triangles of a soup that pass through each other. A promise, then how it is
+// kept: the faired soup has no crossing that its input did not have. The bounds keep the points
+// of a label map apart (label_surface_nets()), but not the triangles between them: where two
+// sheets of a surface are pressed within their boxes (a ribbon one voxel thick, sheets that meet
+// at a junction), a faired triangle may pass through another. The repair finds the crossing
+// triangles (exactly, with the predicates of CGAL's self-intersection test: two triangles that
+// share an edge cross when they fold onto each other, two that share a point when the side of one
+// opposite it meets the other, others when they meet; a triangle collapsed to a segment crosses
+// any other near it) and pulls their points halfway back towards
+// where they started, round after round, a point that was pulled crossing_repair_rounds times all
+// the way: the points end between where the descent left them and where they started, within
+// their bounds, which are convex, and every crossing goes but those of triangles that crossed at
+// the start already.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// The halfway pulls of a point before it is pulled back all the way.
+constexpr std::size_t crossing_repair_rounds = 6;
+
+class Triangle_crossings
+{
+  using Kernel = Exact_predicates_inexact_constructions_kernel;
+  using Box = Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+
+public:
+  explicit Triangle_crossings(const std::vector<std::array<Index, 3> >& triangles) : m_triangles(triangles) {}
+
+  // Whether each triangle crosses another in X, among the pairs with one of the `changed`
+  // triangles (all where `changed` is empty).
+  std::vector<bool> find(const Points& X, const std::vector<bool>& changed) const
+  {
+    std::vector<Box> all, some;
+    all.reserve(m_triangles.size());
+    for(std::size_t f = 0; f < m_triangles.size(); ++f)
+    {
+      all.push_back(box(X, f));
+      if(!changed.empty() && changed[f])
+        some.push_back(all.back());
+    }
+    std::vector<bool> crossing(m_triangles.size(), false);
+    const auto test = [&](const Box& a, const Box& b) {
+      const std::size_t f = a.info(), g = b.info();
+      if(f != g && (!crossing[f] || !crossing[g]) && cross(X, m_triangles[f], m_triangles[g]))
+        crossing[f] = crossing[g] = true;
+    };
+    if(changed.empty())
+      box_self_intersection_d(all.begin(), all.end(), test);
+    else if(!some.empty())
+      box_intersection_d(some.begin(), some.end(), all.begin(), all.end(), test);
+    return crossing;
+  }
+
+private:
+  Box box(const Points& X, std::size_t f) const
+  {
+    double lo[3], hi[3];
+    for(int c = 0; c < 3; ++c)
+    {
+      lo[c] = hi[c] = X(m_triangles[f][0], c);
+      for(int k = 1; k < 3; ++k)
+      {
+        lo[c] = (std::min)(lo[c], X(m_triangles[f][std::size_t(k)], c));
+        hi[c] = (std::max)(hi[c], X(m_triangles[f][std::size_t(k)], c));
+      }
+    }
+    return Box(Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), f);
+  }
+
+  static bool cross(const Points& X, const std::array<Index, 3>& s, const std::array<Index, 3>& t)
+  {
+    const auto p = [&X](Index v) { return Kernel::Point_3(X(v, 0), X(v, 1), X(v, 2)); };
+    // A triangle collapsed to a segment has no side: it counts as crossing, to be pulled back.
+    if(collinear(p(s[0]), p(s[1]), p(s[2])) || collinear(p(t[0]), p(t[1]), p(t[2])))
+      return true;
+    int shared = 0, i = 0, j = 0;
+    for(int a = 0; a < 3; ++a)
+      for(int b = 0; b < 3; ++b)
+        if(s[std::size_t(a)] == t[std::size_t(b)])
+          ++shared, i = a, j = b;
+    if(shared >= 2)
+    {
+      // The third points of s and t, on the same side of the shared edge in one plane.
+      int a = 0, b = 0;
+      while(a < 3 && (s[std::size_t(a)] == t[0] || s[std::size_t(a)] == t[1] || s[std::size_t(a)] == t[2]))
+        ++a;
+      while(b < 3 && (t[std::size_t(b)] == s[0] || t[std::size_t(b)] == s[1] || t[std::size_t(b)] == s[2]))
+        ++b;
+      if(a == 3 || b == 3)
+        return true; // one triangle twice
+      const Kernel::Point_3 u = p(s[std::size_t((a + 1) % 3)]), v = p(s[std::size_t((a + 2) % 3)]);
+      return coplanar(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) &&
+             coplanar_orientation(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) == POSITIVE;
+    }
+    const Kernel::Triangle_3 S(p(s[0]), p(s[1]), p(s[2])), T(p(t[0]), p(t[1]), p(t[2]));
+    if(shared == 1)
+      return do_intersect(S, Kernel::Segment_3(p(t[std::size_t((j + 1) % 3)]), p(t[std::size_t((j + 2) % 3)]))) ||
+             do_intersect(T, Kernel::Segment_3(p(s[std::size_t((i + 1) % 3)]), p(s[std::size_t((i + 2) % 3)])));
+    return do_intersect(S, T);
+  }
+
+  const std::vector<std::array<Index, 3> >& m_triangles;
+};
+
+// Pulls the points of the triangles of X that cross, where they did not cross in X0, back
+// towards X0 until none is left; returns the number of points pulled.
+template <typename Bound>
+std::size_t repair_crossings(const std::vector<std::array<Index, 3> >& triangles, const Bound& bound,
+                             const std::vector<bool>& moving, const Points& X0, Points& X)
+{
+  const Triangle_crossings crossings(triangles);
+  const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
+  std::vector<std::size_t> pulls(n, 0);
+  std::size_t pulled = 0;
+  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false);
+  for(;;)
+  {
+    // Which of the crossing triangles crossed at the start already: pulling them back cannot help.
+    std::vector<bool> unknown(m, false);
+    bool any = false;
+    for(std::size_t f = 0; f < m; ++f)
+      if(crossing[f] && !known[f])
+        unknown[f] = known[f] = any = true;
+    if(any)
+    {
+      const std::vector<bool> at_start = crossings.find(X0, unknown);
+      for(std::size_t f = 0; f < m; ++f)
+        inherited[f] = inherited[f] || (unknown[f] && at_start[f]);
+    }
+    std::vector<bool> moved(n, false);
+    any = false;
+    for(std::size_t f = 0; f < m; ++f)
+      if(crossing[f] && !inherited[f])
+        for(Index v : triangles[f])
+          if(moving[v] && !moved[v] && pulls[v] <= crossing_repair_rounds)
+          {
+            moved[v] = any = true;
+            pulled += pulls[v] == 0;
+            ++pulls[v];
+            const double keep = pulls[v] > crossing_repair_rounds ? 0 : 0.5;
+            point(X, v) = point(X0, v) + keep * (point(X, v) - point(X0, v));
+            bound.project(X, v);
+          }
+    if(!any)
+      return pulled;
+    // A triangle crosses now only if it crossed before or one of its points moved.
+    std::vector<bool> changed(m, false);
+    for(std::size_t f = 0; f < m; ++f)
+      changed[f] = crossing[f] || moved[triangles[f][0]] || moved[triangles[f][1]] || moved[triangles[f][2]];
+    crossing = crossings.find(X, changed);
+  }
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
