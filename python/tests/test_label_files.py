@@ -260,3 +260,38 @@ def test_batch_command_line_on_a_label_map(tmp_path):
     assert "1 faired, 0 skipped, 0 failed" in done.stdout
     assert sorted(os.listdir(tmp_path / "out" / "seg")) == ["label_3.ply", "label_7.ply"]
     assert Path(tmp_path / "out" / "report.csv").read_text().splitlines()[0].endswith(",labels")
+
+
+ATLAS = Path("/usr/share/mricron/templates/HarvardOxford-cort-maxprob-thr0-1mm.nii.gz")
+
+
+@pytest.mark.skipif(TOOL is None, reason="CONSTRAINED_FAIRING_TOOL names no built tool")
+@pytest.mark.skipif(not ATLAS.exists(), reason="no Harvard-Oxford atlas (Debian's mricron-data)")
+def test_tool_and_python_agree_on_an_atlas(tmp_path):
+    """A real segmentation, the block of 40^3 voxels of the Harvard-Oxford cortical atlas with the
+    most labels (corners on a grid of 20): the same surfaces from the tool and from Python, each
+    closed, outward and a manifold as the nets make it, no two points at one position."""
+    labels, affine = cf.read_label_map(ATLAS)
+    n = 40
+    corners = [(a, b, c) for a in range(0, labels.shape[0] - n + 1, n // 2)
+               for b in range(0, labels.shape[1] - n + 1, n // 2)
+               for c in range(0, labels.shape[2] - n + 1, n // 2)]
+    held = [len(np.unique(labels[a:a + n, b:b + n, c:c + n])) for a, b, c in corners]
+    a, b, c = corners[int(np.argmax(held))]
+    block = np.ascontiguousarray(labels[a:a + n, b:b + n, c:c + n])
+    moved = affine.copy()
+    moved[:3, 3] = affine[:3, :3] @ (a, b, c) + affine[:3, 3]
+    save_nifti(tmp_path / "block.nii.gz", block, moved)
+    out = tmp_path / "out"
+    done = subprocess.run([TOOL, "--label-format", "off", str(tmp_path / "block.nii.gz"), str(out)],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    expected = cf.label_surfaces(block, affine=moved)
+    assert len(expected.labels) >= 10
+    assert len(np.unique(expected.vertices, axis=0)) == len(expected.vertices)
+    for label in expected.labels:
+        W, G = expected.surface(label)
+        assert len(np.unique(W, axis=0)) == len(W), "a point split: not a manifold as made"
+        assert is_closed(G) and volume(W, G) > 0
+        V, F = cf.read_mesh(out / f"label_{label}.off")
+        assert np.allclose(triangles_of(V, F), triangles_of(W, G), rtol=0, atol=1e-12)
