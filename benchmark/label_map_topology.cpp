@@ -8,7 +8,7 @@
 // intersects itself (PMP::does_self_intersect); the pairs of distinct points at one position;
 // the points outside their boxes; the smallest angle; the time per iteration.
 //
-//   label_map_topology [--threads K] [FILE.nii[.gz] ...]
+//   label_map_topology [--threads K] [--margin M] [FILE.nii[.gz] ...]
 //
 // Without files: the atlases of Debian's mricron-data (/usr/share/mricron/templates), skipped
 // with a note when the package is absent, after the generated cases.
@@ -51,13 +51,17 @@ struct Map
   std::vector<Label> labels;
 };
 
+// The margin of the boxes (--margin, default label_box_margin).
+double box_margin = PMP::label_box_margin;
+
 void judge(const Map& map)
 {
   std::vector<Point> points;
   std::vector<std::array<std::size_t, 3> > triangles;
   std::vector<std::array<Label, 2> > face_labels;
   std::vector<std::array<double, 3> > half;
-  PMP::label_surface_nets(map.labels.data(), map.size, map.spacing, {0, 0, 0}, points, triangles, face_labels, half);
+  PMP::label_surface_nets(map.labels.data(), map.size, map.spacing, {0, 0, 0}, points, triangles, face_labels, half,
+                          Label(0), box_margin);
   const std::vector<Point> unfaired = points;
   const auto start = std::chrono::steady_clock::now();
   const auto result = PMP::constrained_fairing_of_interfaces(
@@ -121,7 +125,8 @@ int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
   const benchmark::Thread_limit threads(arguments);
-  std::cout << benchmark::machine_description() << "\n"
+  box_margin = std::stod(arguments.option("margin", std::to_string(PMP::label_box_margin)));
+  std::cout << benchmark::machine_description() << ", boxes' margin " << box_margin << "\n"
             << std::left << std::setw(44) << "map" << std::right
             << "labels triangles open split inward crossing coinc. outside angle iter. s/iter total s" << std::endl;
   std::vector<std::string> files(arguments.positional.begin(), arguments.positional.end());

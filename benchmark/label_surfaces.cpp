@@ -11,7 +11,7 @@
 //    fairing each label's surface alone with constrained_fairing() in the same boxes;
 //  - a 256^3 map of 10 labels (the Voronoi cells of 10 seeds inside a ball): time and memory.
 //
-//   label_surfaces [--runs N] [--threads K] [--size 256]
+//   label_surfaces [--runs N] [--threads K] [--size 256] [--margin M]
 
 #include "benchmark_support.h"
 
@@ -49,13 +49,16 @@ struct Soup
   std::vector<std::set<Label> > around; // the labels of each point's triangles
 };
 
+// The margin of the boxes (--margin, default label_box_margin).
+double box_margin = PMP::label_box_margin;
+
 Soup make_soup(const std::vector<Label>& labels, const std::array<std::size_t, 3>& size,
                const std::array<double, 3>& spacing)
 {
   Soup soup;
   soup.spacing = spacing;
   PMP::label_surface_nets(labels.data(), size, spacing, {0, 0, 0}, soup.points, soup.triangles, soup.face_labels,
-                          soup.half_extents);
+                          soup.half_extents, Label(0), box_margin);
   soup.around.resize(soup.points.size());
   for(std::size_t f = 0; f < soup.triangles.size(); ++f)
     for(std::size_t v : soup.triangles[f])
@@ -318,7 +321,8 @@ int main(int argc, char* argv[])
 {
   const benchmark::Arguments arguments(argc, argv);
   const benchmark::Thread_limit threads(arguments);
-  std::cout << benchmark::machine_description() << std::endl;
+  box_margin = std::stod(arguments.option("margin", std::to_string(PMP::label_box_margin)));
+  std::cout << benchmark::machine_description() << ", boxes' margin " << box_margin << std::endl;
   ball_case({1, 1, 1}, arguments.runs);
   ball_case({1, 1, 3}, arguments.runs);
   voronoi_case(std::size_t(std::stoi(arguments.option("size", "256"))), arguments.runs);

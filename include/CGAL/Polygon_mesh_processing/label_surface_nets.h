@@ -28,7 +28,7 @@ The margin, as a fraction of the voxel spacing, that `label_surface_nets()` keep
 box and the sides of its dual cell: the boxes of two points are at least twice this apart, so
 that no two points of a faired label map meet.
 */
-constexpr double label_box_margin = 0.05;
+constexpr double label_box_margin = 0.01;
 
 /*!
 \ingroup PkgConstrainedFairingRef
@@ -253,7 +253,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   }
 
   // Points of split cells can line up (a staircase of cells split alike): the middle point of a
-  // triangle on a line moves off it by `margin` of the spacing along the axis the line runs least
+  // triangle on a line moves off it by a quarter of its box along the axis the line runs least
   // along, its box shrunk to stay within the one it had.
   for(int round = 0; round < 4; ++round)
   {
@@ -278,9 +278,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
         if(std::abs(line[int(a)]) < std::abs(line[int(axis)]))
           axis = a;
       const std::size_t v = std::size_t(triangles[t][std::size_t(middle)]);
-      const double shift = margin * spacing[axis];
-      if(!(box_half_extents[first_box + v - first][axis] > 2 * shift))
-        continue;
+      const double shift = box_half_extents[first_box + v - first][axis] / 4;
       double x[3] = {p[std::size_t(middle)].x(), p[std::size_t(middle)].y(), p[std::size_t(middle)].z()};
       x[axis] += shift;
       points[v] = Point(x[0], x[1], x[2]);
