@@ -96,6 +96,24 @@ public:
   // Ring 2 a + s: around the half-axis of axis a on side s; its faces in order around it.
   const std::array<int, 4>& ring_faces(int ring) const { return m_ring_faces[std::size_t(ring)]; }
   bool paired(int ring) const { return m_paired[std::size_t(ring)]; }
+  // The sheet of each node (the nodes joined through faces), named by one of its nodes.
+  std::array<int, 12> sheets() const
+  {
+    std::array<int, 12> parent;
+    for(int v = 0; v < 12; ++v)
+      parent[std::size_t(v)] = v;
+    const auto root = [&parent](int v) {
+      while(parent[std::size_t(v)] != v)
+        v = parent[std::size_t(v)];
+      return v;
+    };
+    for(int f = 0; f < 12; ++f)
+      if(m_active[std::size_t(f)])
+        parent[std::size_t(root(m_node[std::size_t(f)][0]))] = root(m_node[std::size_t(f)][1]);
+    for(int v = 0; v < 12; ++v)
+      parent[std::size_t(v)] = root(v);
+    return parent;
+  }
   int region(int o) const
   {
     while(m_region[std::size_t(o)] != o)
@@ -178,191 +196,86 @@ private:
   std::array<bool, 6> m_paired;
 };
 
+// The seeds of a cell's points: ids planted on nodes. The ids planted on one node are one point;
+// the ids of the two pairs of a doubled ring, and of two regions of one label at one sheet, must
+// stay apart, or the cell keeps one point per sheet (a conflict).
+class Dual_cell_seeds
+{
+public:
+  static constexpr int none = -1;
+
+  Dual_cell_seeds() { m_seed.fill(none); }
+
+  int new_id()
+  {
+    m_parent.push_back(int(m_parent.size()));
+    return int(m_parent.size()) - 1;
+  }
+  void plant(int node, int id)
+  {
+    if(m_seed[std::size_t(node)] == none)
+      m_seed[std::size_t(node)] = id;
+    else
+      m_parent[std::size_t(root(id))] = root(m_seed[std::size_t(node)]);
+  }
+  void keep_apart(int id, int other) { m_apart.push_back({id, other}); }
+  bool conflict() const
+  {
+    for(const auto& pair : m_apart)
+      if(root(pair[0]) == root(pair[1]))
+        return true;
+    return false;
+  }
+  // Each node's point, numbered 0, 1, ... in the order of the nodes (none where unseeded), and
+  // their number.
+  int points(std::array<int, 12>& point_of_node) const
+  {
+    std::vector<int> number(m_parent.size(), none);
+    int count = 0;
+    for(std::size_t v = 0; v < 12; ++v)
+    {
+      point_of_node[v] = none;
+      if(m_seed[v] == none)
+        continue;
+      int& n = number[std::size_t(root(m_seed[v]))];
+      if(n == none)
+        n = count++;
+      point_of_node[v] = n;
+    }
+    return count;
+  }
+
+private:
+  int root(int i) const
+  {
+    while(m_parent[std::size_t(i)] != i)
+      i = m_parent[std::size_t(i)];
+    return i;
+  }
+
+  std::vector<int> m_parent;
+  std::array<int, 12> m_seed;
+  std::vector<std::array<int, 2> > m_apart;
+};
+
 template <typename Label>
 class Dual_cell
 {
+  static constexpr int none = -1;
+
 public:
   // `label(d0, d1, d2)`: the label of the voxel at offset d (each in -2 .. 3) from the block's first.
   template <typename LabelAt>
   Dual_cell(const LabelAt& label, double margin) : m_nodes(label)
   {
-    m_point.fill(-1);
+    m_point.fill(none);
     if(m_nodes.uniform())
       return;
-    const int none = -1;
-    // The sheets: the nodes joined through faces.
-    std::array<int, 12> sheet_of_node;
-    sheet_of_node.fill(none);
-    std::array<int, 12> parent;
-    for(int v = 0; v < 12; ++v)
-      parent[std::size_t(v)] = v;
-    const auto root = [&parent](int v) {
-      while(parent[std::size_t(v)] != v)
-        v = parent[std::size_t(v)];
-      return v;
-    };
-    for(int f = 0; f < 12; ++f)
-      if(m_nodes.active(f))
-      {
-        const int x = m_nodes.node(f, (f / 4 + 1) % 3), y = m_nodes.node(f, (f / 4 + 2) % 3);
-        parent[std::size_t(root(x))] = root(y);
-      }
-
-    // Seeds: ids planted on nodes. The ids planted on one node are one point; the ids of two
-    // pairs of a doubled ring, and of two regions of one label at one sheet, must stay apart.
-    std::vector<int> id_parent;
-    const auto id_root = [&id_parent](int i) {
-      while(id_parent[std::size_t(i)] != i)
-        i = id_parent[std::size_t(i)];
-      return i;
-    };
-    const auto new_id = [&id_parent] {
-      id_parent.push_back(int(id_parent.size()));
-      return int(id_parent.size()) - 1;
-    };
-    std::array<int, 12> seed;
-    seed.fill(none);
-    std::vector<std::array<int, 2> > apart;
-    const auto plant = [&](int node, int id) {
-      if(seed[std::size_t(node)] == none)
-        seed[std::size_t(node)] = id;
-      else
-        id_parent[std::size_t(id_root(id))] = id_root(seed[std::size_t(node)]);
-    };
-    // Doubled edges: a paired ring whose two pairs are one sheet here and in the next cell.
-    for(int a = 0; a < 3; ++a)
-    {
-      const int ring = 2 * a + 1;
-      if(!m_nodes.paired(ring) || root(2 * ring) != root(2 * ring + 1))
-        continue;
-      const Dual_cell_nodes<Label> next([&](int d0, int d1, int d2) {
-        int d[3] = {d0, d1, d2};
-        ++d[a];
-        return label(d[0], d[1], d[2]);
-      });
-      if(!next.paired(2 * a))
-        continue;
-      // The next cell sees the same ring as its ring 2 a, with the same pairs.
-      int x = -1, y = -1;
-      for(int f : next.ring_faces(2 * a))
-        if(next.active(f))
-        {
-          const int node = next.node(f, a);
-          (node % 2 == 0 ? x : y) = node;
-        }
-      if(x >= 0 && y >= 0 && next_sheets_joined(next, x, y))
-      {
-        const int p = new_id(), q = new_id();
-        plant(2 * ring, p);
-        plant(2 * ring + 1, q);
-        apart.push_back({p, q});
-      }
-    }
-    // Pinched labels: a label with two regions at one sheet; each region seeds the nodes of its
-    // faces there.
-    for(int o = 0; o < 8; ++o)
-    {
-      const Label pinched = m_nodes.label(o);
-      bool first_of_label = true;
-      for(int e = 0; e < o; ++e)
-        first_of_label = first_of_label && m_nodes.label(e) != pinched;
-      if(!first_of_label)
-        continue;
-      // The id of each (sheet, region) of the label.
-      std::array<std::array<int, 8>, 12> id_of;
-      for(auto& ids : id_of)
-        ids.fill(none);
-      for(int f = 0; f < 12; ++f)
-      {
-        if(!m_nodes.active(f))
-          continue;
-        const int sheet = root(m_nodes.node(f, (f / 4 + 1) % 3));
-        for(int side = 0; side < 2; ++side)
-          if(m_nodes.label(voxel_of_face(f, side)) == pinched)
-            id_of[std::size_t(sheet)][std::size_t(m_nodes.region(voxel_of_face(f, side)))] = 0;
-      }
-      for(auto& ids : id_of)
-      {
-        int regions = 0;
-        for(int id : ids)
-          regions += id != none;
-        if(regions < 2)
-        {
-          ids.fill(none);
-          continue;
-        }
-        std::vector<int> made;
-        for(int& id : ids)
-          if(id != none)
-          {
-            id = new_id();
-            for(int other : made)
-              apart.push_back({other, id});
-            made.push_back(id);
-          }
-      }
-      for(int f = 0; f < 12; ++f)
-      {
-        if(!m_nodes.active(f))
-          continue;
-        const int first = m_nodes.node(f, (f / 4 + 1) % 3), second = m_nodes.node(f, (f / 4 + 2) % 3);
-        for(int side = 0; side < 2; ++side)
-          if(m_nodes.label(voxel_of_face(f, side)) == pinched)
-          {
-            const int id = id_of[std::size_t(root(first))][std::size_t(m_nodes.region(voxel_of_face(f, side)))];
-            if(id != none)
-              plant(first, id), plant(second, id);
-          }
-      }
-    }
-    bool conflict = false;
-    for(const auto& pair : apart)
-      conflict = conflict || id_root(pair[0]) == id_root(pair[1]);
-    int seeds = 0;
-    std::vector<int> number(id_parent.size(), none);
-    for(int v = 0; v < 12; ++v)
-      if(seed[std::size_t(v)] != none)
-      {
-        int& n = number[std::size_t(id_root(seed[std::size_t(v)]))];
-        if(n == none)
-          n = seeds++;
-        seed[std::size_t(v)] = n;
-      }
-
-    // Every node takes a point: its seed's, the nearest seed's in its sheet (breadth first), or
-    // its sheet's own.
-    std::array<int, 12> point_of_node;
-    point_of_node.fill(none);
-    if(!conflict && seeds > 0)
-    {
-      std::vector<int> queue;
-      for(int v = 0; v < 12; ++v)
-        if(seed[std::size_t(v)] != none)
-          point_of_node[std::size_t(v)] = seed[std::size_t(v)], queue.push_back(v);
-      for(std::size_t q = 0; q < queue.size(); ++q)
-        for(int f = 0; f < 12; ++f)
-        {
-          if(!m_nodes.active(f))
-            continue;
-          const int x = m_nodes.node(f, (f / 4 + 1) % 3), y = m_nodes.node(f, (f / 4 + 2) % 3);
-          const int from = queue[q], to = x == from ? y : y == from ? x : none;
-          if(to != none && point_of_node[std::size_t(to)] == none)
-            point_of_node[std::size_t(to)] = point_of_node[std::size_t(from)], queue.push_back(to);
-        }
-    }
-    // Sheets without seeds, and all sheets on a conflict, get one point of their own; then the
-    // points are numbered by their first face.
-    for(int v = 0; v < 12; ++v)
-      if(point_of_node[std::size_t(v)] == none)
-        point_of_node[std::size_t(v)] = (conflict ? 0 : seeds) + root(v);
-    number_points(point_of_node);
-    if(seeds > 0 && !conflict && !close_ridges())
-    {
-      for(int v = 0; v < 12; ++v)
-        point_of_node[std::size_t(v)] = root(v);
-      number_points(point_of_node);
-      m_caps.clear();
-    }
+    const std::array<int, 12> sheet = m_nodes.sheets();
+    Dual_cell_seeds seeds;
+    seed_doubled_edges(label, sheet, seeds);
+    seed_pinched_labels(sheet, seeds);
+    place_points(sheet, seeds);
     make_boxes(margin);
   }
 
@@ -383,21 +296,135 @@ public:
   double high(int p, int c) const { return m_high[std::size_t(p)][std::size_t(c)]; }
 
 private:
-  // Whether nodes x and y of a neighbour are in one of its sheets.
-  static bool next_sheets_joined(const Dual_cell_nodes<Label>& next, int x, int y)
+  // Doubled edges: a paired ring whose two pairs are one sheet here and in the next cell along
+  // its axis; each pair seeds a point.
+  template <typename LabelAt>
+  void seed_doubled_edges(const LabelAt& label, const std::array<int, 12>& sheet, Dual_cell_seeds& seeds) const
   {
-    std::array<int, 12> parent;
+    for(int a = 0; a < 3; ++a)
+    {
+      const int ring = 2 * a + 1;
+      if(!m_nodes.paired(ring) || sheet[std::size_t(2 * ring)] != sheet[std::size_t(2 * ring + 1)])
+        continue;
+      const Dual_cell_nodes<Label> next([&](int d0, int d1, int d2) {
+        int d[3] = {d0, d1, d2};
+        ++d[a];
+        return label(d[0], d[1], d[2]);
+      });
+      if(!next.paired(2 * a))
+        continue;
+      // The next cell sees the same ring as its ring 2 a, with the same pairs.
+      int x = none, y = none;
+      for(int f : next.ring_faces(2 * a))
+        if(next.active(f))
+        {
+          const int node = next.node(f, a);
+          (node % 2 == 0 ? x : y) = node;
+        }
+      const std::array<int, 12> next_sheet = next.sheets();
+      if(x != none && y != none && next_sheet[std::size_t(x)] == next_sheet[std::size_t(y)])
+      {
+        const int p = seeds.new_id(), q = seeds.new_id();
+        seeds.plant(2 * ring, p);
+        seeds.plant(2 * ring + 1, q);
+        seeds.keep_apart(p, q);
+      }
+    }
+  }
+
+  // Pinched labels: a label with two regions or more at one sheet; each region seeds the nodes
+  // of its faces there.
+  void seed_pinched_labels(const std::array<int, 12>& sheet, Dual_cell_seeds& seeds) const
+  {
+    for(int o = 0; o < 8; ++o)
+    {
+      const Label pinched = m_nodes.label(o);
+      bool first_of_label = true;
+      for(int e = 0; e < o; ++e)
+        first_of_label = first_of_label && m_nodes.label(e) != pinched;
+      if(!first_of_label)
+        continue;
+      // The id of each (sheet, region) of the label, where a sheet holds two regions or more.
+      std::array<std::array<int, 8>, 12> id_of;
+      for(auto& ids : id_of)
+        ids.fill(none);
+      for_each_side_of(pinched, [&](int f, int o2) {
+        id_of[std::size_t(sheet[std::size_t(first_node(f))])][std::size_t(m_nodes.region(o2))] = 0;
+      });
+      for(auto& ids : id_of)
+      {
+        if(std::count(ids.begin(), ids.end(), none) > 6)
+        {
+          ids.fill(none);
+          continue;
+        }
+        std::vector<int> made;
+        for(int& id : ids)
+          if(id != none)
+          {
+            id = seeds.new_id();
+            for(int other : made)
+              seeds.keep_apart(other, id);
+            made.push_back(id);
+          }
+      }
+      for_each_side_of(pinched, [&](int f, int o2) {
+        const int id = id_of[std::size_t(sheet[std::size_t(first_node(f))])][std::size_t(m_nodes.region(o2))];
+        if(id != none)
+          seeds.plant(first_node(f), id), seeds.plant(second_node(f), id);
+      });
+    }
+  }
+
+  // f(face, voxel) for each face with a voxel of label l on one of its sides.
+  template <typename F>
+  void for_each_side_of(Label l, const F& f) const
+  {
+    for(int face = 0; face < 12; ++face)
+      if(m_nodes.active(face))
+        for(int side = 0; side < 2; ++side)
+          if(m_nodes.label(voxel_of_face(face, side)) == l)
+            f(face, voxel_of_face(face, side));
+  }
+  int first_node(int f) const { return m_nodes.node(f, (f / 4 + 1) % 3); }
+  int second_node(int f) const { return m_nodes.node(f, (f / 4 + 2) % 3); }
+
+  // Every node takes a point: its seed's, the nearest seed's in its sheet (breadth first), or
+  // its sheet's own; on a conflict, or where the ridges cannot be closed, one point per sheet.
+  void place_points(const std::array<int, 12>& sheet, const Dual_cell_seeds& seeds)
+  {
+    std::array<int, 12> point_of_node;
+    const int count = seeds.points(point_of_node);
+    const bool split = count > 0 && !seeds.conflict();
+    if(split)
+    {
+      std::vector<int> queue;
+      for(int v = 0; v < 12; ++v)
+        if(point_of_node[std::size_t(v)] != none)
+          queue.push_back(v);
+      for(std::size_t q = 0; q < queue.size(); ++q)
+        for(int f = 0; f < 12; ++f)
+        {
+          if(!m_nodes.active(f))
+            continue;
+          const int from = queue[q], to = first_node(f) == from   ? second_node(f)
+                                          : second_node(f) == from ? first_node(f)
+                                                                   : none;
+          if(to != none && point_of_node[std::size_t(to)] == none)
+            point_of_node[std::size_t(to)] = point_of_node[std::size_t(from)], queue.push_back(to);
+        }
+    }
     for(int v = 0; v < 12; ++v)
-      parent[std::size_t(v)] = v;
-    const auto root = [&parent](int v) {
-      while(parent[std::size_t(v)] != v)
-        v = parent[std::size_t(v)];
-      return v;
-    };
-    for(int f = 0; f < 12; ++f)
-      if(next.active(f))
-        parent[std::size_t(root(next.node(f, (f / 4 + 1) % 3)))] = root(next.node(f, (f / 4 + 2) % 3));
-    return root(x) == root(y);
+      if(!split || point_of_node[std::size_t(v)] == none)
+        point_of_node[std::size_t(v)] = (split ? count : 0) + sheet[std::size_t(v)];
+    number_points(point_of_node);
+    if(split && !close_ridges())
+    {
+      for(int v = 0; v < 12; ++v)
+        point_of_node[std::size_t(v)] = sheet[std::size_t(v)];
+      number_points(point_of_node);
+      m_caps.clear();
+    }
   }
 
   // Face f's corner as its polygon runs through it (Label_surface_nets.h: counterclockwise seen
