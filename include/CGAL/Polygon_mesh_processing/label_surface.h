@@ -32,12 +32,14 @@ normals point out of `label`'s region: a triangle whose normal points from the r
 and reversed when it is the second. Its points are copies of `points`, bit for bit, so the
 surfaces of two labels share their interface exactly.
 
-Where the label's region touches itself only along an edge or at a point (voxels that meet only
-along an edge or at a corner), its triangles there are not a manifold; the surface is split
-there, so that `tmesh` is a manifold whose sheets touch at copies of the shared points. Along an
-edge of more than two triangles, each triangle is joined to its neighbour around the edge across
-the label's region (the triangles are sorted by angle around the edge); at a point, the
-triangles joined across edges make one vertex, and each other fan gets its own.
+The soup of `label_surface_nets()` gives each label a manifold as it is (its points are shared
+by no two sheets), except in the rare dual cells of three labels or more that its rule leaves
+with one point. Where a label's triangles are not a manifold (such a cell, or a soup made
+elsewhere), the surface is split there, so that `tmesh` is a manifold whose sheets touch at
+copies of the shared points. Along an edge of more than two triangles, each triangle is joined to
+its neighbour around the edge across the label's region (the triangles are sorted by angle
+around the edge); at a point, the triangles joined across edges make one vertex, and each other
+fan gets its own.
 
 \tparam PointRange a random access range of points convertible to the point type of `tmesh`
 \tparam TriangleRange a random access range of arrays of three point indices (any integer type)
