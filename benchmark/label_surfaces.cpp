@@ -13,7 +13,7 @@
 //
 //   label_surfaces [--runs N] [--threads K] [--size 256] [--margin M]
 
-#include "benchmark_support.h"
+#include "label_soup.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
@@ -36,35 +36,10 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
 using benchmark::Mesh;
 using benchmark::Point;
-using Label = std::int32_t;
-using Triangle = std::array<std::size_t, 3>;
-
-struct Soup
-{
-  std::array<double, 3> spacing;
-  std::vector<Point> points;
-  std::vector<Triangle> triangles;
-  std::vector<std::array<Label, 2> > face_labels;
-  std::vector<std::array<double, 3> > half_extents; // each point's box
-  std::vector<std::set<Label> > around; // the labels of each point's triangles
-};
+using namespace label_soup;
 
 // The margin of the boxes (--margin, default label_box_margin).
 double box_margin = PMP::label_box_margin;
-
-Soup make_soup(const std::vector<Label>& labels, const std::array<std::size_t, 3>& size,
-               const std::array<double, 3>& spacing)
-{
-  Soup soup;
-  soup.spacing = spacing;
-  PMP::label_surface_nets(labels.data(), size, spacing, {0, 0, 0}, soup.points, soup.triangles, soup.face_labels,
-                          soup.half_extents, Label(0), box_margin);
-  soup.around.resize(soup.points.size());
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-    for(std::size_t v : soup.triangles[f])
-      soup.around[v].insert(soup.face_labels[f].begin(), soup.face_labels[f].end());
-  return soup;
-}
 
 // The ball phantom: centre c, radius R, cut by x = t z.
 constexpr double tilt = 0.3;
@@ -106,97 +81,6 @@ struct Ball
   }
 };
 
-// VTK's constrained smoothing of surface nets: each point towards the mean of its neighbours on
-// its interface (a point of one interface) or its junction line (a point of three labels with
-// two line neighbours), relaxation 0.5, clamped to its box; the others stay.
-class Clamped_laplacian
-{
-public:
-  explicit Clamped_laplacian(const Soup& soup) : m_soup(soup), m_neighbours(soup.points.size())
-  {
-    std::vector<std::set<std::size_t> > all(soup.points.size()), line(soup.points.size());
-    std::map<std::pair<std::size_t, std::size_t>, std::set<Label> > edges;
-    for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-      for(int c = 0; c < 3; ++c)
-      {
-        const std::size_t a = soup.triangles[f][std::size_t(c)], b = soup.triangles[f][std::size_t((c + 1) % 3)];
-        all[a].insert(b);
-        all[b].insert(a);
-        edges[{(std::min)(a, b), (std::max)(a, b)}].insert(soup.face_labels[f].begin(), soup.face_labels[f].end());
-      }
-    for(const auto& e : edges)
-      if(e.second.size() >= 3)
-      {
-        line[e.first.first].insert(e.first.second);
-        line[e.first.second].insert(e.first.first);
-      }
-    for(std::size_t v = 0; v < soup.points.size(); ++v)
-      if(soup.around[v].size() == 2)
-        m_neighbours[v].assign(all[v].begin(), all[v].end());
-      else if(soup.around[v].size() == 3 && line[v].size() == 2)
-        m_neighbours[v].assign(line[v].begin(), line[v].end());
-  }
-
-  void step(std::vector<Point>& P) const
-  {
-    std::vector<Point> Q = P;
-    for(std::size_t v = 0; v < P.size(); ++v)
-    {
-      if(m_neighbours[v].empty())
-        continue;
-      std::array<double, 3> mean{0, 0, 0};
-      for(std::size_t u : m_neighbours[v])
-        for(int c = 0; c < 3; ++c)
-          mean[std::size_t(c)] += P[u][c] / double(m_neighbours[v].size());
-      std::array<double, 3> q;
-      for(int c = 0; c < 3; ++c)
-      {
-        const double x = P[v][c] + 0.5 * (mean[std::size_t(c)] - P[v][c]), c0 = m_soup.points[v][c];
-        const double h = m_soup.spacing[std::size_t(c)] / 2;
-        q[std::size_t(c)] = std::clamp(x, c0 - h, c0 + h);
-      }
-      Q[v] = Point(q[0], q[1], q[2]);
-    }
-    P.swap(Q);
-  }
-
-private:
-  const Soup& m_soup;
-  std::vector<std::vector<std::size_t> > m_neighbours;
-};
-
-double smallest_angle(const Soup& soup, const std::vector<Point>& P)
-{
-  double smallest = 180;
-  for(const Triangle& t : soup.triangles)
-  {
-    const Point &a = P[t[0]], &b = P[t[1]], &c = P[t[2]];
-    smallest = (std::min)({smallest, benchmark::angle_deg(b - a, c - a), benchmark::angle_deg(a - b, c - b),
-                           benchmark::angle_deg(a - c, b - c)});
-  }
-  return smallest;
-}
-
-std::array<double, 3> half_of(const std::array<double, 3>& spacing)
-{
-  return {spacing[0] / 2, spacing[1] / 2, spacing[2] / 2};
-}
-
-// Joint fairing: its points, time and iterations.
-std::vector<Point> fair_jointly(const Soup& soup, int runs, double& seconds, std::size_t& iterations)
-{
-  std::vector<Point> P;
-  const double cap = 2 * *std::max_element(soup.spacing.begin(), soup.spacing.end());
-  seconds = benchmark::median_seconds(runs, [&] {
-    P = soup.points;
-    iterations = PMP::constrained_fairing_of_interfaces(P, soup.triangles, soup.face_labels, cap,
-                                                        CFP::vertex_box_half_extents_map(
-                                                          CGAL::make_property_map(soup.half_extents)))
-                   .number_of_iterations;
-  });
-  return P;
-}
-
 // Each label's closed surface faired alone, in the same boxes: the time of all of them.
 double fair_separately(const Soup& soup, const std::vector<Label>& labels, int runs)
 {
@@ -231,7 +115,7 @@ void ball_case(const std::array<double, 3>& spacing, int runs)
         if(x * x + y * y + z * z < ball.R * ball.R)
           labels[(i * size[1] + j) * size[2] + k] = x < tilt * z ? 1 : 2;
       }
-  const Soup soup = make_soup(labels, size, spacing);
+  const Soup soup = make_soup(labels, size, spacing, box_margin);
 
   // The clamped Laplacian at its best count, by the RMS distance of all points.
   const Clamped_laplacian laplacian(soup);
@@ -301,7 +185,7 @@ void voronoi_case(std::size_t n, int runs)
       }
   benchmark::reset_peak_memory();
   const auto start = std::chrono::steady_clock::now();
-  const Soup soup = make_soup(labels, size, {1, 1, 1});
+  const Soup soup = make_soup(labels, size, {1, 1, 1}, box_margin);
   const double nets = benchmark::seconds_since(start);
   double seconds = 0;
   std::size_t iterations = 0;
