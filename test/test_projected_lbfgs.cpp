@@ -17,6 +17,7 @@
 #endif
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -202,6 +203,17 @@ void check_stopping_rule()
   // No decrease over a whole window, with no earlier window to extrapolate from: stationary.
   const auto flat = [&](std::size_t) { return 40.; };
   CHECK(stopping_iteration(options, flat, 1000) == options.window);
+  // The rule keeps two windows whatever the iterations allowed: a limit of the size type's
+  // largest value allocates nothing in proportion to it, and stops where any limit does.
+  CF::Solver_options unlimited = options;
+  unlimited.max_iterations = (std::numeric_limits<std::size_t>::max)();
+  CF::Stopping_rule rule(unlimited);
+  CF::Solver_report report;
+  rule.push(fading(0));
+  std::size_t k = 1;
+  while(rule.next_iteration(fading(k), CF::Always_continue(), report))
+    ++k;
+  CHECK(k == stop);
 }
 
 int main()

@@ -210,6 +210,9 @@ def test_the_options_reach_the_library(sphere):
     assert fairest.final_bending_energy < accurate.final_bending_energy
     _, no_barrier = cf.fair(V, F, 0.05, sliver_barrier_weight=0)
     assert no_barrier.final_energy == no_barrier.final_bending_energy
+    # A limit of any size costs no memory in proportion to it.
+    _, unlimited = cf.fair(V, F, 0.05, max_iterations=4_000_000_000)
+    assert unlimited.status == "CONVERGED"
     W0, untouched = cf.fair(V, F, 0.05, max_iterations=0)
     assert np.array_equal(W0, V) and untouched.number_of_iterations == 0
     Ws, _ = cf.fair(V, F, 0.05, initial_smoothing_steps=0, max_iterations=3)

@@ -13,6 +13,9 @@
 // it is in linear convergence, d1 q / (1 - q) would remain after a window that gained d1.
 // Steady progress, however slow, has q near or above 1 and does not stop the run; progress that
 // fades does.
+//
+// Only the last two windows are kept (a ring of 2 window + 1 energies), so that the rule's memory
+// does not grow with the number of iterations allowed or run.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_STOPPING_RULE_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_STOPPING_RULE_H
@@ -33,12 +36,16 @@ class Stopping_rule
 {
 public:
   explicit Stopping_rule(const Solver_options& options)
-    : m_window(options.window), m_threshold(options.threshold), m_remaining_fraction(options.remaining_fraction)
+    : m_window(options.window), m_threshold(options.threshold), m_remaining_fraction(options.remaining_fraction),
+      m_energies(2 * options.window + 1)
   {
-    m_energies.reserve(options.max_iterations + 1);
   }
 
-  void push(double energy) { m_energies.push_back(energy); }
+  void push(double energy)
+  {
+    m_energies[m_count % m_energies.size()] = energy;
+    ++m_count;
+  }
 
   // Counts an iteration that reached `energy`, tells the callback, and returns false, with
   // the status set, when the run stops there: cancelled by the callback, or stalled.
@@ -62,28 +69,32 @@ public:
 
   bool has_stalled() const
   {
-    if(m_energies.size() <= m_window)
+    if(m_count <= m_window)
       return false;
-    const double before = m_energies[m_energies.size() - 1 - m_window];
-    const double last = before - m_energies.back();
+    const double newest = ago(0), before = ago(m_window);
+    const double last = before - newest;
     if(!(last <= double(m_window) * m_threshold * before))
       return false;
     if(!(m_remaining_fraction > 0))
       return true;
     if(!(last > 0))
       return true; // no decrease over a whole window: stationary
-    if(m_energies.size() <= 2 * m_window)
+    if(m_count <= 2 * m_window)
       return false;
-    const double previous = m_energies[m_energies.size() - 1 - 2 * m_window] - before;
+    const double previous = ago(2 * m_window) - before;
     const double q = last / previous;
-    return q < 1 && last * q / (1 - q) <= m_remaining_fraction * m_energies.back();
+    return q < 1 && last * q / (1 - q) <= m_remaining_fraction * newest;
   }
 
 private:
+  // The energy pushed k pushes before the newest (k <= 2 window).
+  double ago(std::size_t k) const { return m_energies[(m_count - 1 - k) % m_energies.size()]; }
+
   std::size_t m_window;
   double m_threshold;
   double m_remaining_fraction;
-  std::vector<double> m_energies;
+  std::vector<double> m_energies; // a ring: push number c at c mod its size
+  std::size_t m_count = 0;        // pushes so far
 };
 
 } // namespace Constrained_fairing
