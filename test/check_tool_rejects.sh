@@ -51,4 +51,25 @@ done
 expect "OUT must end with" --eps 0.1 "$data/head.off" "$work/faired.txt"
 expect "cannot write" --eps 0.1 "$data/head.off" "$work/no_such_dir/faired.off"
 
+# An output that is the input is refused, through another path too, and the input left as it
+# was; --in-place lets the result replace it.
+in_copy=$work/faired_input.off
+for out in "$in_copy" "$work/./faired_input.off"; do
+  rm -f "$work"/*
+  cp "$data/head.off" "$in_copy"
+  if "$tool" --eps 0.1 "$in_copy" "$out" 2> "$work/stderr.txt" || ! grep -q "^error: OUT is IN" "$work/stderr.txt" ||
+     ! cmp -s "$data/head.off" "$in_copy"; then
+    echo "FAILED: OUT $out is IN: $(cat "$work/stderr.txt")"
+    failures=$((failures + 1))
+  else
+    echo "ok: OUT $out is IN: $(cat "$work/stderr.txt")"
+  fi
+done
+if ! "$tool" --in-place --eps 0.1 "$in_copy" "$in_copy" > /dev/null 2>&1 || cmp -s "$data/head.off" "$in_copy"; then
+  echo "FAILED: --in-place did not replace the input"
+  failures=$((failures + 1))
+else
+  echo "ok: --in-place replaced the input"
+fi
+
 exit $((failures > 0))

@@ -64,7 +64,8 @@ input position (Hildebrandt and Polthier, SGP 2007).
   OUT   where to write the result (.off, .obj, .ply or .stl), full precision; default: IN's
         name with _faired, in the current folder (.off if IN's format cannot be written). A .ply
         also gets each vertex's distance to its input position (vertex property "deviation")
-        and whether it ended on its bound ("at_bound", 0 or 1)
+        and whether it ended on its bound ("at_bound", 0 or 1). An OUT that is IN is refused
+        unless --in-place is given
 
   A NIfTI-1 label map IN (.nii or .nii.gz: a segmentation, one integer label per voxel, 0 the
   background) gives one closed surface per label, its interfaces shared exactly with its
@@ -89,6 +90,7 @@ options:
   --accurate               the accurate objective: closer to the true surface of a noisy scan,
                            a little less fair; not for surfaces extracted from volumes
   --label-format EXT       a label map's surfaces as ply (default), off, obj or stl
+  --in-place               let OUT be IN: the result replaces the input once complete
   --help                   this text
 )";
 
@@ -155,7 +157,7 @@ bool parse_extents(const std::string& text, std::array<double, 3>& h)
 struct Options
 {
   std::vector<std::string> positional;
-  bool box = false, fixed_border = false, accurate = false, help = false;
+  bool box = false, fixed_border = false, accurate = false, in_place = false, help = false;
   std::optional<std::string> eps;
   std::string extents, radius_property, error;
   std::optional<std::string> label_format;
@@ -181,6 +183,8 @@ Options parse_options(int argc, char* argv[])
       o.fixed_border = true;
     else if(a == "--accurate")
       o.accurate = true;
+    else if(a == "--in-place")
+      o.in_place = true;
     else if(a == "--eps")
       value(o.eps.emplace());
     else if(a == "--box-extents")
@@ -205,6 +209,14 @@ int fail(const std::string& message)
 {
   std::cerr << "error: " << message << std::endl;
   return EXIT_FAILURE;
+}
+
+// Whether `a` and `b` name one existing file (through links and relative paths alike).
+bool is_same_file(const std::string& a, const std::string& b)
+{
+  std::error_code error;
+  const bool same = std::filesystem::equivalent(a, b, error);
+  return !error && same;
 }
 
 // IN's name with _faired, in the current folder, in IN's format if it can be written.
@@ -303,7 +315,7 @@ int fair_label_map(const Options& options, const std::string& in)
 {
   namespace FE = Constrained_fairing_front_end;
   if(options.eps || options.box || !options.extents.empty() || !options.radius_property.empty() ||
-     options.fixed_border)
+     options.fixed_border || options.in_place)
     return fail("of the options, only --accurate and --label-format apply to a label map");
   const std::string format = options.label_format.value_or("ply");
   if(format != "ply" && format != "off" && format != "obj" && format != "stl")
@@ -425,6 +437,8 @@ int main(int argc, char* argv[])
 
   if(!writable_format(out))
     return fail("OUT must end with .off, .obj, .ply or .stl (got " + out + ")");
+  if(!options.in_place && is_same_file(in, out))
+    return fail("OUT is IN (" + out + "): the result would replace the input; give another OUT, or --in-place");
   // Checked before a long run rather than after it.
   const std::filesystem::path folder = std::filesystem::path(out).parent_path();
   if(!folder.empty() && !std::filesystem::is_directory(folder))
