@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -59,6 +60,30 @@ struct Indexed
       ++test::failures;                                                                       \
     }                                                                                         \
   } while(false)
+
+// The relative RMS error of the gradient G of `value` at X against central differences of step
+// h, over every `stride`-th coordinate (X is restored).
+template <typename Value>
+double gradient_error(CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Points& X,
+                      const CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Points& G,
+                      const Value& value, double h, Eigen::Index stride = 1)
+{
+  double error2 = 0, norm2 = 0;
+  for(Eigen::Index k = 0; k < X.size(); k += stride)
+  {
+    double& c = X.data()[k];
+    const double c0 = c;
+    c = c0 + h;
+    const double up = value(X);
+    c = c0 - h;
+    const double down = value(X);
+    c = c0;
+    const double fd = (up - down) / (2 * h);
+    error2 += (fd - G.data()[k]) * (fd - G.data()[k]);
+    norm2 += G.data()[k] * G.data()[k];
+  }
+  return norm2 > 0 ? std::sqrt(error2 / norm2) : std::numeric_limits<double>::infinity();
+}
 
 inline int report(const char* name)
 {

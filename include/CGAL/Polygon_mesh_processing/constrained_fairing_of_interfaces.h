@@ -31,8 +31,12 @@ The objective is that of `constrained_fairing()`: the bending energy, here insid
 with `Constrained_fairing_objective::ACCURATE`, the fidelity term. The junction lines, where three
 labels or more meet along an edge, are faired as curves: their second differences, relative to
 their segments' length, are added to the objective, so that a line keeps its crease and is not
-rounded off. A point that ends a junction line or where lines branch, and a point where four
-labels or more meet, does not move.
+rounded off. The volume that each label's surface encloses, where that surface is closed, is held
+at its input value to within that value's uncertainty (a penalty on the surface's mean offset
+beyond it): the voxels' count times a voxel's volume for surface nets, which the bending energy
+alone would let grow on thin regions. A point
+that ends a junction line or where lines branch, and a point where four labels or more meet, does
+not move.
 
 The bound and the contract are those of `constrained_fairing()`, with the points numbered in
 `points`: the per-point maps are property maps whose key is a point's index (`std::size_t`);

@@ -11,7 +11,8 @@
 //  - order: the points in the Hilbert order of their input positions, the bounds read into it;
 //  - build: the triangles, each oriented from its smaller label into its larger, and the hinges
 //    of each interface: an edge of exactly two of its triangles (where an interface meets
-//    itself along an edge, no hinge); the objective with the junction lines' term;
+//    itself along an edge, no hinge); the objective with the junction lines' term and the
+//    labels' volumes (Label_volumes.h), each label's held at its input value;
 //  - descend (Fairing_descent.h), pull back the points of triangles that cross (Crossing_repair.h),
 //    report, and write back the points that moved.
 
@@ -31,6 +32,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
 
@@ -125,6 +127,27 @@ struct Junctions
   }
 };
 
+// The labels of each triangle numbered 0, 1, ... in increasing order, the smaller first.
+template <typename LabelPairRange>
+std::vector<std::array<Index, 2> > dense_label_sides(const LabelPairRange& face_labels)
+{
+  using Label = std::decay_t<decltype(face_labels[0][0])>;
+  std::vector<Label> labels;
+  for(const auto& pair : face_labels)
+    labels.insert(labels.end(), pair.begin(), pair.end());
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  const auto number = [&labels](Label l) { return Index(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin()); };
+  std::vector<std::array<Index, 2> > sides;
+  sides.reserve(face_labels.size());
+  for(const auto& pair : face_labels)
+  {
+    const Index a = number(pair[0]), b = number(pair[1]);
+    sides.push_back({(std::min)(a, b), (std::max)(a, b)});
+  }
+  return sides;
+}
+
 template <typename PointRange, typename TriangleRange, typename LabelPairRange, typename NamedParameters>
 Constrained_fairing_result fair_interfaces(PointRange& points, const TriangleRange& triangles,
                                            const LabelPairRange& face_labels, double epsilon,
@@ -205,11 +228,13 @@ Constrained_fairing_result fair_interfaces(PointRange& points, const TriangleRan
   }
   const Hinge_mesh mesh(n, oriented, hinge_faces);
   const Junction_curves curves(junctions.inner, X0, Junction_curves::default_weight);
+  Label_volumes volumes(oriented, dense_label_sides(face_labels), X0, Label_volumes::default_weight);
 
   const auto descend = [&](const auto& bound) {
     Fairing_objective energy(mesh, X0, settings.sliver_barrier_weight,
                              Sliver_barrier::threshold_of_angle(interface_sliver_angle));
     energy.add_junction_curves(curves);
+    energy.add_label_volumes(volumes);
     Points anchor;
     if(settings.is_accurate())
     {

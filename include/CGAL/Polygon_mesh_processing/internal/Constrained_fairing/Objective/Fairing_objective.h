@@ -3,7 +3,7 @@
 //
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
 // against slivers (Sliver_barrier.h), plus, on a multi-label surface, the bending of its
-// junction lines (Junction_curves.h), plus, for the accurate objective, a fidelity term that
+// junction lines (Junction_curves.h) and its labels' volumes (Label_volumes.h), plus, for the accurate objective, a fidelity term that
 // keeps the surface near an anchor a_i:
 //
 //   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
@@ -27,6 +27,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 
@@ -72,6 +73,9 @@ public:
   // Adds the bending of the junction lines of a multi-label surface (kept by reference).
   void add_junction_curves(const Junction_curves& curves) { m_curves = &curves; }
 
+  // Adds the volumes of the labels of a multi-label surface (kept by reference).
+  void add_label_volumes(Label_volumes& volumes) { m_volumes = &volumes; }
+
   std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
 
   double bending_energy(const Points& X) { return m_bending.value(X); }
@@ -81,6 +85,8 @@ public:
     double sum = m_bending.value(X) + m_barrier.value(X);
     if(m_curves)
       sum += m_curves->value(X);
+    if(m_volumes)
+      sum += m_volumes->value(X);
     return sum + fidelity(X);
   }
 
@@ -92,6 +98,8 @@ public:
     sum += m_barrier.add_gradient(X, G, scales);
     if(m_curves)
       sum += m_curves->add_gradient(X, G, scales);
+    if(m_volumes)
+      sum += m_volumes->add_gradient(X, G, scales);
     if(m_weight.empty())
       return sum;
     parallel_for_blocks(m_weight.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -122,6 +130,7 @@ private:
   const Hinge_mesh& m_mesh;
   const Points* m_anchor = nullptr;
   const Junction_curves* m_curves = nullptr;
+  Label_volumes* m_volumes = nullptr;
   Bending_energy m_bending;
   Sliver_barrier m_barrier;
   std::vector<double> m_weight; // empty without the fidelity term
