@@ -137,7 +137,9 @@ std::vector<std::array<Index, 2> > dense_label_sides(const LabelPairRange& face_
     labels.insert(labels.end(), pair.begin(), pair.end());
   std::sort(labels.begin(), labels.end());
   labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
-  const auto number = [&labels](Label l) { return Index(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin()); };
+  const auto number = [&labels](Label l) {
+    return Index(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin());
+  };
   std::vector<std::array<Index, 2> > sides;
   sides.reserve(face_labels.size());
   for(const auto& pair : face_labels)

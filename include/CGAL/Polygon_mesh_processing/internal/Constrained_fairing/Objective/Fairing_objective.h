@@ -3,8 +3,8 @@
 //
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
 // against slivers (Sliver_barrier.h), plus, on a multi-label surface, the bending of its
-// junction lines (Junction_curves.h) and its labels' volumes (Label_volumes.h), plus, for the accurate objective, a fidelity term that
-// keeps the surface near an anchor a_i:
+// junction lines (Junction_curves.h) and its labels' volumes (Label_volumes.h), plus, for the
+// accurate objective, a fidelity term that keeps the surface near an anchor a_i:
 //
 //   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
 //

@@ -184,8 +184,9 @@ private:
     for(std::size_t a = 0; a < 3; ++a)
       if(!lengths[a].empty())
       {
-        std::nth_element(lengths[a].begin(), lengths[a].begin() + std::ptrdiff_t(lengths[a].size() / 2), lengths[a].end());
-        h[a] = lengths[a][lengths[a].size() / 2];
+        const auto middle = lengths[a].begin() + std::ptrdiff_t(lengths[a].size() / 2);
+        std::nth_element(lengths[a].begin(), middle, lengths[a].end());
+        h[a] = *middle;
       }
     // plateaus: union of edge-adjacent triangles of one axis and plane
     std::vector<std::size_t> parent(m);
@@ -219,7 +220,8 @@ private:
       if(std::get<0>(edges[i]) == std::get<0>(edges[i + 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i + 1]))
         for(int swap = 0; swap < 2; ++swap)
         {
-          const std::size_t f = std::get<2>(edges[i + std::size_t(swap)]), g = std::get<2>(edges[i + 1 - std::size_t(swap)]);
+          const std::size_t f = std::get<2>(edges[i + std::size_t(swap)]);
+          const std::size_t g = std::get<2>(edges[i + 1 - std::size_t(swap)]);
           if(find(f) == find(g))
             continue;
           const int a = axis[f];
@@ -265,7 +267,8 @@ private:
         for(std::size_t k = 0; k < 3; ++k)
         {
           const Index a = triangles[f][k], b = triangles[f][(k + 1) % 3];
-          edges.emplace_back(sides[f][std::size_t(j)], (std::min)(a, b), (std::max)(a, b), (a < b) == (j == 0) ? 1 : -1);
+          const int way = (a < b) == (j == 0) ? 1 : -1;
+          edges.emplace_back(sides[f][std::size_t(j)], (std::min)(a, b), (std::max)(a, b), way);
         }
     std::sort(edges.begin(), edges.end());
     std::vector<bool> closed(labels, true);
