@@ -15,8 +15,6 @@
 
 #include "label_soup.h"
 
-#include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
