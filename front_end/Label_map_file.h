@@ -23,6 +23,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace Constrained_fairing_front_end {
@@ -85,44 +86,46 @@ private:
   bool m_swapped;
 };
 
-// One voxel of data type `code`, converted; false if it is not a whole number.
-inline bool voxel_value(const unsigned char* p, int code, bool swapped, double slope, double intercept,
-                        std::int64_t& value)
+// f(T()) for the C++ type T of NIfTI data type `code`; false if a label map cannot have it.
+template <typename F>
+bool with_voxel_type(int code, const F& f)
 {
-  unsigned char b[8];
-  const auto read = [&](auto zero) {
-    using T = decltype(zero);
-    std::memcpy(b, p, sizeof(T));
-    if(swapped)
-      std::reverse(b, b + sizeof(T));
-    T v;
-    std::memcpy(&v, b, sizeof(T));
-    return v;
-  };
-  double x;
   switch(code)
   {
-  case 2: x = read(std::uint8_t()); break;
-  case 4: x = read(std::int16_t()); break;
-  case 8: x = read(std::int32_t()); break;
-  case 16: x = read(float()); break;
-  case 64: x = read(double()); break;
-  case 256: x = read(std::int8_t()); break;
-  case 512: x = read(std::uint16_t()); break;
-  case 768: x = read(std::uint32_t()); break;
-  case 1024:
-  case 1280:
+  case 2: f(std::uint8_t()); return true;
+  case 4: f(std::int16_t()); return true;
+  case 8: f(std::int32_t()); return true;
+  case 16: f(float()); return true;
+  case 64: f(double()); return true;
+  case 256: f(std::int8_t()); return true;
+  case 512: f(std::uint16_t()); return true;
+  case 768: f(std::uint32_t()); return true;
+  case 1024: f(std::int64_t()); return true;
+  case 1280: f(std::uint64_t()); return true;
+  default: return false;
+  }
+}
+
+// One voxel of type T, scaled; false if it is not a whole number.
+template <typename T>
+bool voxel_value(const unsigned char* p, bool swapped, double slope, double intercept, std::int64_t& value)
+{
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, p, sizeof(T));
+  if(swapped)
+    std::reverse(b, b + sizeof(T));
+  T v;
+  std::memcpy(&v, b, sizeof(T));
+  double x = double(v);
+  if constexpr(std::is_integral_v<T> && sizeof(T) == 8)
   {
-    const std::int64_t v = code == 1024 ? read(std::int64_t()) : std::int64_t(read(std::uint64_t()));
+    // Exact where a double is not.
     if(slope == 1 && intercept == 0)
     {
-      value = v;
+      value = std::int64_t(v);
       return true;
     }
-    x = double(v);
-    break;
-  }
-  default: return false;
+    x = double(std::int64_t(v));
   }
   x = slope * x + intercept;
   if(!std::isfinite(x) || x != std::round(x) || std::abs(x) > 9e15)
@@ -131,16 +134,21 @@ inline bool voxel_value(const unsigned char* p, int code, bool swapped, double s
   return true;
 }
 
-inline int bytes_of(int code)
+// Slab k of an I x J x K map, voxels of type T in x-fastest order, into `labels` (z fastest);
+// the first voxel (i, j) that is not a whole number, if any.
+template <typename T>
+bool read_slab(const unsigned char* slab, const std::array<std::size_t, 3>& size, std::size_t k, bool swapped,
+               double slope, double intercept, std::vector<std::int64_t>& labels, std::array<std::size_t, 2>& bad)
 {
-  switch(code)
-  {
-  case 2: case 256: return 1;
-  case 4: case 512: return 2;
-  case 8: case 16: case 768: return 4;
-  case 64: case 1024: case 1280: return 8;
-  default: return 0;
-  }
+  const std::size_t I = size[0], J = size[1], K = size[2];
+  for(std::size_t j = 0; j < J; ++j)
+    for(std::size_t i = 0; i < I; ++i)
+      if(!voxel_value<T>(slab + (j * I + i) * sizeof(T), swapped, slope, intercept, labels[(i * J + j) * K + k]))
+      {
+        bad = {i, j};
+        return false;
+      }
+  return true;
 }
 
 } // namespace internal
@@ -173,8 +181,8 @@ inline std::string read_label_map(const std::string& path, Label_map& map)
   if(std::any_of(dim.begin(), dim.begin() + 3, [](std::int64_t n) { return n < 1; }))
     return path + ": an image dimension is not positive";
   const int code = header.int16(70);
-  const int bytes_per_voxel = internal::bytes_of(code);
-  if(bytes_per_voxel == 0)
+  std::size_t bytes_per_voxel = 0;
+  if(!internal::with_voxel_type(code, [&](auto zero) { bytes_per_voxel = sizeof(zero); }))
     return path + ": unsupported NIfTI data type " + std::to_string(code) + " for a label map";
   double slope = header.float32(112), intercept = header.float32(116);
   if(slope == 0 || !std::isfinite(slope))
@@ -190,18 +198,21 @@ inline std::string read_label_map(const std::string& path, Label_map& map)
   const std::size_t I = std::size_t(dim[0]), J = std::size_t(dim[1]), K = std::size_t(dim[2]);
   map.size = {I, J, K};
   map.labels.assign(I * J * K, 0);
-  std::vector<unsigned char> slab(I * J * std::size_t(bytes_per_voxel));
+  std::vector<unsigned char> slab(I * J * bytes_per_voxel);
   for(std::size_t k = 0; k < K; ++k)
   {
     if(!read(slab.data(), slab.size()))
       return path + ": truncated (" + std::to_string(I) + " x " + std::to_string(J) + " x " + std::to_string(K) +
              " voxels announced)";
-    for(std::size_t j = 0; j < J; ++j)
-      for(std::size_t i = 0; i < I; ++i)
-        if(!internal::voxel_value(slab.data() + (j * I + i) * std::size_t(bytes_per_voxel), code, header.swapped(),
-                                  slope, intercept, map.labels[(i * J + j) * K + k]))
-          return path + ": voxel (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) +
-                 ") is not a whole number: not a label map";
+    std::array<std::size_t, 2> bad{0, 0};
+    bool whole = true;
+    internal::with_voxel_type(code, [&](auto zero) {
+      whole = internal::read_slab<decltype(zero)>(slab.data(), map.size, k, header.swapped(), slope, intercept,
+                                                  map.labels, bad);
+    });
+    if(!whole)
+      return path + ": voxel (" + std::to_string(bad[0]) + ", " + std::to_string(bad[1]) + ", " + std::to_string(k) +
+             ") is not a whole number: not a label map";
   }
 
   const double pixdim[4] = {header.float32(76), header.float32(80), header.float32(84), header.float32(88)};

@@ -12,8 +12,9 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_anchor.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_tree.h>
@@ -60,7 +61,8 @@ void check_gradient()
     anchor.data()[k] += u(rng);
   }
   const double sliver_weight = CF::default_sliver_barrier_weight;
-  CF::Fairing_objective plain(hinges, X0, sliver_weight), objective(hinges, X0, sliver_weight);
+  CF::Fairing_objective plain(hinges, X0, sliver_weight, CF::default_sliver_threshold),
+    objective(hinges, X0, sliver_weight, CF::default_sliver_threshold);
   objective.add_fidelity(1000, [t](std::size_t) { return t; }, anchor);
 
   // The term by hand: mu / n * sum |x_i - a_i|^2 / t^2 over the n vertices.
@@ -71,7 +73,7 @@ void check_gradient()
   CHECK(std::abs(objective.value(X) - plain.value(X) - by_hand) <= 1e-12 * by_hand);
   CHECK(objective.value(anchor) == plain.value(anchor));
   // A vertex of tolerance 0 does not move: it has no term and is not counted in n.
-  CF::Fairing_objective pinned(hinges, X0, sliver_weight);
+  CF::Fairing_objective pinned(hinges, X0, sliver_weight, CF::default_sliver_threshold);
   pinned.add_fidelity(1000, [t](std::size_t i) { return i == 0 ? 0. : t; }, anchor);
   const double pinned_by_hand =
     1000 * (sum - (CF::point(X, 0) - CF::point(anchor, 0)).squaredNorm() / (t * t)) / double(num_vertices(m) - 1);
@@ -103,7 +105,7 @@ double surface_rms(const Mesh& result, const Mesh& clean)
 double sliver_barrier(const Mesh& m0, const Mesh& m)
 {
   const test::Indexed in(m0), out(m);
-  return CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight).value(out.X);
+  return CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight, CF::default_sliver_threshold).value(out.X);
 }
 
 // The bundled noisy elephant (noise radius 0.25 h): the accurate objective ends closer to the

@@ -24,6 +24,7 @@
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -199,7 +200,7 @@ void check_label_volumes()
   CF::Points X0(Eigen::Index(soup.points.size()), 3);
   for(std::size_t v = 0; v < soup.points.size(); ++v)
     CF::point(X0, v) = Eigen::Vector3d(soup.points[v].x(), soup.points[v].y(), soup.points[v].z());
-  CF::Label_volumes volumes(triangles, sides, X0, CF::Label_volumes::default_weight);
+  CF::Label_volumes volumes(triangles, sides, X0, CF::default_label_volume_weight);
   CHECK(volumes.size() == 4);
   CHECK(volumes.value(X0) == 0);
 

@@ -15,6 +15,7 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -47,7 +48,7 @@ Mesh needle(double degrees, double scale = 1, int count = 1)
 double barrier(const Mesh& m, double weight)
 {
   const Indexed x(m);
-  return CF::Sliver_barrier(x.hinges, x.X, weight).value(x.X);
+  return CF::Sliver_barrier(x.hinges, x.X, weight, CF::default_sliver_threshold).value(x.X);
 }
 
 void check_values()
@@ -57,7 +58,7 @@ void check_values()
     // q = 4 sqrt(3) A / (l1^2 + l2^2 + l3^2) with legs 1 and apex a: A = sin(a) / 2, and the
     // base squared is 2 - 2 cos(a).
     const double a = degrees * CGAL_PI / 180, q = 2 * std::sqrt(3.) * std::sin(a) / (4 - 2 * std::cos(a));
-    const double q0 = CF::Sliver_barrier::default_threshold, r = q0 / (q + q0 / 100);
+    const double q0 = CF::default_sliver_threshold, r = q0 / (q + q0 / 100);
     CHECK(std::abs(barrier(needle(degrees), 7) - 7 * (r - 1) * (r - 1)) <= 1e-12 * 7 * (r - 1) * (r - 1));
     // Dimensionless: the same at any size.
     CHECK(std::abs(barrier(needle(degrees, 1e-3), 7) - barrier(needle(degrees), 7)) <= 1e-9 * barrier(needle(degrees), 7));
@@ -65,12 +66,12 @@ void check_values()
     CHECK(std::abs(barrier(needle(degrees, 1, 5), 7) - 5 * barrier(needle(degrees), 7)) <= 1e-12 * 5 * barrier(needle(degrees), 7));
   }
   // The threshold is the needle of 3 degrees; better triangles cost nothing.
-  CHECK(std::abs(CF::Sliver_barrier::default_threshold - std::sqrt(3.) * std::sin(3 * CGAL_PI / 180)) < 1e-15);
+  CHECK(std::abs(CF::default_sliver_threshold - std::sqrt(3.) * std::sin(3 * CGAL_PI / 180)) < 1e-15);
   CHECK(barrier(needle(3.1), 7) == 0 && barrier(needle(60), 7) == 0);
   // Another threshold, the needle of 6 degrees: below it a cost, above it none; and no triangle
   // with an angle under 6 degrees escapes it, the isosceles needle being the best of them.
   const double q6 = CF::Sliver_barrier::threshold_of_angle(6);
-  CHECK(std::abs(CF::Sliver_barrier::threshold_of_angle(3) - CF::Sliver_barrier::default_threshold) < 1e-15);
+  CHECK(std::abs(CF::Sliver_barrier::threshold_of_angle(3) - CF::default_sliver_threshold) < 1e-15);
   const auto barrier_at = [&](const Mesh& m, double q0) {
     const Indexed x(m);
     return CF::Sliver_barrier(x.hinges, x.X, 7, q0).value(x.X);
@@ -90,7 +91,7 @@ void check_values()
   // A triangle of zero area in the input is left out, whatever it becomes.
   const Mesh flat = needle(0);
   const Indexed x(flat);
-  CF::Sliver_barrier b(x.hinges, x.X, 7);
+  CF::Sliver_barrier b(x.hinges, x.X, 7, CF::default_sliver_threshold);
   CF::Points Y = x.X;
   Y(2, 1) = 1e-3;
   CHECK(b.value(x.X) == 0 && b.value(Y) == 0);
@@ -119,7 +120,7 @@ void check_gradient()
   Indexed x(m);
   const CF::Points X0 = x.X; // no triangle degenerate: none is left out
   const std::size_t slivers = make_caps(x);
-  CF::Sliver_barrier b(x.hinges, X0, 100);
+  CF::Sliver_barrier b(x.hinges, X0, 100, CF::default_sliver_threshold);
   CF::Points G = CF::Points::Zero(x.X.rows(), 3);
   CF::Stiffness_and_reach scales;
   scales.stiffness = Eigen::VectorXd::Zero(x.X.rows());
@@ -157,7 +158,7 @@ void check_extreme_scales()
   const auto evaluate = [&](double s, CF::Points& G, CF::Stiffness_and_reach& scales) {
     G = CF::Points::Zero(x.X.rows(), 3);
     scales.stiffness = Eigen::VectorXd::Zero(x.X.rows());
-    CF::Sliver_barrier b(x.hinges, s * X0, 100);
+    CF::Sliver_barrier b(x.hinges, s * X0, 100, CF::default_sliver_threshold);
     return b.add_gradient(s * x.X, G, &scales);
   };
   CF::Points G, GY;
@@ -232,7 +233,7 @@ void check_elephant()
       // The objective is the bending energy plus the barrier, recomputed here on the output
       // (relative to the input, whose degenerate triangles it leaves out).
       const Indexed in(noisy), out(barred);
-      const double sliver = CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight).value(out.X);
+      const double sliver = CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight, CF::default_sliver_threshold).value(out.X);
       CHECK(r_plain.final_energy == r_plain.final_bending_energy);
       CHECK(std::abs(r.final_energy - (r.final_bending_energy + sliver)) <= 1e-9 * r.final_energy);
     }

@@ -26,7 +26,7 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
          tolerance: Optional[ArrayLike] = None,
          fixed: Optional[ArrayLike] = None,
          region: Optional[ArrayLike] = None,
-         objective: str = "fairest",
+         objective: Optional[str] = None,
          fidelity_weight: Optional[float] = None,
          method: Optional[str] = None,
          max_iterations: Optional[int] = None,
@@ -81,8 +81,8 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
     region : array_like, optional
         Fair only these faces (a boolean mask of shape ``(m,)`` or face indices, each listed
         once): only vertices whose faces all lie in the region move, so its border stays.
-    objective : {"fairest", "accurate"}
-        ``"fairest"`` minimizes the bending energy alone: the fairest surface within the bound.
+    objective : {None, "fairest", "accurate"}
+        ``"fairest"`` (the default) minimizes the bending energy alone: the fairest surface within the bound.
         ``"accurate"`` adds a fidelity term towards a denoised copy of the input: closer to the
         true surface of a noisy scan, a little less fair. Not for surfaces extracted from
         volumes.
@@ -154,9 +154,13 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
     V = vertices_array(vertices)
     n = V.shape[0]
     F = faces_array(faces, n)
-    options = call_options(epsilon, bound, objective, method, fidelity_weight, sliver_barrier_weight,
-                           energy_decrease_threshold, max_iterations, initial_smoothing_steps,
-                           conjugate_gradient_iterations)
+    options = call_options(epsilon, bound=bound, method=method, objective=objective,
+                           fidelity_weight=fidelity_weight,
+                           sliver_barrier_weight=sliver_barrier_weight,
+                           energy_decrease_threshold=energy_decrease_threshold,
+                           max_iterations=max_iterations,
+                           initial_smoothing_steps=initial_smoothing_steps,
+                           conjugate_gradient_iterations=conjugate_gradient_iterations)
 
     if tolerance is not None:
         tolerance = numbers_array(tolerance, "tolerance", [(n,)])
@@ -177,38 +181,39 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
     return result_of(outcome)
 
 
-def call_options(epsilon, bound, objective, method, fidelity_weight, sliver_barrier_weight,
-                 energy_decrease_threshold, max_iterations, initial_smoothing_steps,
-                 conjugate_gradient_iterations):
-    """The options of a call as `fair` takes them, checked, in the compiled module's form: only
-    those the user gave are set, the others keep the library's defaults."""
+def _threshold_argument(value):
+    threshold = number_argument(value, "energy_decrease_threshold")
+    if not threshold >= 0:
+        raise invalid(f"energy_decrease_threshold must be non-negative (got {threshold})")
+    return threshold
+
+
+# How each named setting of the library (``_core.named_settings()``, the table of
+# ``Fairing_settings.h``) is read from its keyword; test_defaults.py checks that the two agree.
+SETTING_ARGUMENTS = {
+    "max_iterations": lambda v: count_argument(v, "max_iterations", _UINT_MAX),
+    "energy_decrease_threshold": _threshold_argument,
+    "initial_smoothing_steps": lambda v: count_argument(v, "initial_smoothing_steps"),
+    "conjugate_gradient_iterations": lambda v: count_argument(v, "conjugate_gradient_iterations"),
+    "objective": lambda v: getattr(_core.Objective, choice_argument(
+        v, "objective", ("fairest", "accurate")).upper()),
+    "fidelity_weight": lambda v: number_argument(v, "fidelity_weight",
+                                                 Defect.INVALID_FIDELITY_WEIGHT),
+    "sliver_barrier_weight": lambda v: number_argument(v, "sliver_barrier_weight",
+                                                       Defect.INVALID_SLIVER_BARRIER_WEIGHT),
+}
+
+
+def call_options(epsilon, bound=None, method=None, **settings):
+    """The options of a call as `fair` takes them, checked, in the compiled module's form: the
+    named `settings` that are not None are set, the others keep the library's defaults."""
     options = _core.Options()
     options.epsilon = number_argument(epsilon, "epsilon", Defect.INVALID_EPSILON)
     options.bound = "" if bound is None else choice_argument(bound, "bound", ("ball", "box"))
-    options.objective = getattr(_core.Objective, choice_argument(
-        objective, "objective", ("fairest", "accurate")).upper())
     if method is not None:
         options.method = getattr(_core.Method, choice_argument(method, "method", _METHODS).upper())
-    if fidelity_weight is not None:
-        options.fidelity_weight = number_argument(fidelity_weight, "fidelity_weight",
-                                                  Defect.INVALID_FIDELITY_WEIGHT)
-    if sliver_barrier_weight is not None:
-        options.sliver_barrier_weight = number_argument(
-            sliver_barrier_weight, "sliver_barrier_weight", Defect.INVALID_SLIVER_BARRIER_WEIGHT)
-    if energy_decrease_threshold is not None:
-        threshold = number_argument(energy_decrease_threshold, "energy_decrease_threshold")
-        if not threshold >= 0:
-            raise invalid(f"energy_decrease_threshold must be non-negative (got {threshold})")
-        options.energy_decrease_threshold = threshold
-    if max_iterations is not None:
-        options.max_iterations = count_argument(max_iterations, "max_iterations", _UINT_MAX)
-    if initial_smoothing_steps is not None:
-        options.initial_smoothing_steps = count_argument(initial_smoothing_steps,
-                                                         "initial_smoothing_steps")
-    if conjugate_gradient_iterations is not None:
-        options.conjugate_gradient_iterations = count_argument(conjugate_gradient_iterations,
-                                                               "conjugate_gradient_iterations")
-
+    options.given = {name: SETTING_ARGUMENTS[name](value)
+                     for name, value in settings.items() if value is not None}
     return options
 
 
@@ -237,8 +242,7 @@ class _Progress:
 
     def __init__(self, progress, options):
         self._progress = progress
-        self._total = (options.max_iterations if options.max_iterations is not None
-                       else _core.default_settings(options.method)["max_iterations"])
+        self._total = options.max_iterations()
         self._bar = None
         self._shown = 0.0
 

@@ -71,7 +71,7 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
                    background: int = 0,
                    labels_to_mesh: Optional[Sequence[int]] = None,
                    epsilon: Optional[float] = None,
-                   objective: str = "fairest",
+                   objective: Optional[str] = None,
                    max_iterations: Optional[int] = None,
                    progress: Progress = None) -> LabelSurfaces:
     """The surfaces of a 3-D label map, faired together within their voxels.
@@ -110,7 +110,7 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
         The labels to make surfaces of; the others count as `background`. Default: all.
     epsilon : float, optional
         A cap on how far a point moves; default: no cap beyond the voxel box.
-    objective : {"fairest", "accurate"}
+    objective : {None, "fairest", "accurate"}
         As in `fair`.
     max_iterations : int, optional
         As in `fair`.
@@ -204,7 +204,7 @@ def fair_interfaces(vertices: ArrayLike, faces: ArrayLike, face_labels: ArrayLik
                     box_centers: Optional[ArrayLike] = None,
                     tolerance: Optional[ArrayLike] = None,
                     fixed: Optional[ArrayLike] = None,
-                    objective: str = "fairest",
+                    objective: Optional[str] = None,
                     fidelity_weight: Optional[float] = None,
                     max_iterations: Optional[int] = None,
                     energy_decrease_threshold: Optional[float] = None,
@@ -264,8 +264,11 @@ def fair_interfaces(vertices: ArrayLike, faces: ArrayLike, face_labels: ArrayLik
         if box_half_extents is None:
             raise invalid("epsilon is needed without box_half_extents")
         epsilon = 2 * float(np.linalg.norm(box_half_extents, axis=1).max(initial=0))
-    options = call_options(epsilon, None, objective, None, fidelity_weight, sliver_barrier_weight,
-                           energy_decrease_threshold, max_iterations, initial_smoothing_steps, None)
+    options = call_options(epsilon, objective=objective, fidelity_weight=fidelity_weight,
+                           sliver_barrier_weight=sliver_barrier_weight,
+                           energy_decrease_threshold=energy_decrease_threshold,
+                           max_iterations=max_iterations,
+                           initial_smoothing_steps=initial_smoothing_steps)
     if box_centers is not None:
         box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
     if tolerance is not None:

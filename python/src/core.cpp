@@ -199,36 +199,33 @@ private:
   std::unique_ptr<py::error_already_set> m_error;
 };
 
-// The options of a call as the user gave them: each unset one keeps the library's default.
+// The options of a call as the user gave them: the named settings (Fairing_settings.h) the user
+// set, by their name in the table; each one unset keeps the library's default.
 struct Options
 {
   double epsilon = 0;
   std::string bound; // "ball", "box", or empty: the box if box arrays are given, as in C++
   PMP::Constrained_fairing_method method = PMP::Constrained_fairing_method::QUASI_NEWTON;
-  PMP::Constrained_fairing_objective objective = PMP::Constrained_fairing_objective::FAIREST;
-  std::optional<double> fidelity_weight, sliver_barrier_weight, energy_decrease_threshold;
-  std::optional<std::size_t> max_iterations, initial_smoothing_steps, conjugate_gradient_iterations;
+  py::dict given;
 
-  // The library's settings (Fairing_settings.h), its defaults where the user gave nothing.
+  // The library's settings, its defaults where the user gave nothing; with the GIL held.
   CF::Fairing_settings settings() const
   {
     CF::Fairing_settings settings(method);
-    settings.objective = objective;
-    if(fidelity_weight)
-      settings.fidelity_weight = *fidelity_weight;
-    if(sliver_barrier_weight)
-      settings.sliver_barrier_weight = *sliver_barrier_weight;
-    if(energy_decrease_threshold)
-      settings.options.threshold = *energy_decrease_threshold;
-    if(max_iterations)
-      settings.options.max_iterations = *max_iterations;
-    if(initial_smoothing_steps)
-      settings.options.smoothing_steps = *initial_smoothing_steps;
-    if(conjugate_gradient_iterations)
-      settings.options.cg_iterations = *conjugate_gradient_iterations;
+    CF::for_each_named_setting(settings, [this](const char* name, const char*, auto, auto& field) {
+      if(given.contains(name))
+        field = given[name].template cast<std::decay_t<decltype(field)> >();
+    });
     return settings;
   }
 };
+
+// The named parameters of a call with `settings`, before `np`.
+template <typename NamedParameters>
+auto with_settings(const CF::Fairing_settings& settings, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<CF::Fairing_settings, CF::fairing_settings_t, NamedParameters>(settings, np);
+}
 
 // The result as the Python layer reads it, with the output arrays when the call succeeded.
 py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_array& out,
@@ -280,6 +277,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
   double* deviation_data = deviation.mutable_data();
   bool* at_bound_data = at_bound.mutable_data();
   double* out_data = out.mutable_data();
+  const CF::Fairing_settings settings = options.settings();
   PMP::Constrained_fairing_result result;
   {
     py::gil_scoped_release release;
@@ -306,7 +304,6 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
       if(region)
         for(py::ssize_t k = 0; k < region->shape(0); ++k)
           region_faces.push_back(face_descriptor(static_cast<Mesh::size_type>(region->data()[k])));
-      const CF::Fairing_settings settings = options.settings();
       const auto np = CFP::vertex_tolerance_map(
         Row_map<double, 1>{tolerance_data},
         CFP::vertex_deviation_map(
@@ -316,7 +313,10 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
                                                            CGAL::parameters::vertex_is_constrained_map(
                                                              Row_map<bool, 1, bool>{fixed ? fixed->data()
                                                                                           : none_fixed.get()})))));
-      const std::vector<face_descriptor>* faces_to_fair = region ? &region_faces : nullptr;
+      const auto fair_with = [&](const auto& parameters) {
+        return region ? PMP::constrained_fairing(region_faces, mesh, options.epsilon, with_settings(settings, parameters))
+                      : PMP::constrained_fairing(mesh, options.epsilon, with_settings(settings, parameters));
+      };
       // The box pipeline also serves the ball asked for with box arrays: the library then
       // reports BOX_WITH_BALL.
       if(box || box_arrays)
@@ -326,8 +326,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
         if(!box_half_extents)
           cube.assign(3 * n, options.epsilon);
         const double* extents_data = box_half_extents ? box_half_extents->data() : cube.data();
-        result = CF::run_fairing_driver(
-          faces_to_fair, mesh, options.epsilon, settings,
+        result = fair_with(
           CFP::deviation_bound(box ? PMP::Deviation_bound::BOX : PMP::Deviation_bound::BALL,
                                CFP::vertex_box_half_extents_map(
                                  Row_map<std::array<double, 3>, 3>{extents_data},
@@ -335,7 +334,7 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
                                    Row_map<Point, 3>{box_centers ? box_centers->data() : vertices.data()}, np))));
       }
       else
-        result = CF::run_fairing_driver(faces_to_fair, mesh, options.epsilon, settings, np);
+        result = fair_with(np);
       for(vertex_descriptor v : mesh.vertices())
       {
         const Point& q = mesh.point(v);
@@ -423,6 +422,7 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
   Mask_array at_bound(static_cast<py::ssize_t>(n));
   Float_array out({static_cast<py::ssize_t>(n), py::ssize_t(3)});
   double* out_data = out.mutable_data();
+  const CF::Fairing_settings settings = options.settings();
   PMP::Constrained_fairing_result result;
   {
     py::gil_scoped_release release;
@@ -437,10 +437,12 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
           Array_map<bool, Key>{at_bound.mutable_data()},
           CFP::iteration_callback(std::ref(callback), CGAL::parameters::vertex_is_constrained_map(Row_map<bool, 1, bool, Key>{
                                                         fixed ? fixed->data() : none_fixed.get()})))));
-    const CF::Fairing_settings settings = options.settings();
+    const auto fair_with = [&](const auto& parameters) {
+      return PMP::constrained_fairing_of_interfaces(soup.points, soup.triangles, soup.labels, options.epsilon,
+                                                    with_settings(settings, parameters));
+    };
     if(box)
-      result = CF::fair_interfaces(
-        soup.points, soup.triangles, soup.labels, options.epsilon, settings,
+      result = fair_with(
         CFP::deviation_bound(PMP::Deviation_bound::BOX,
                              CFP::vertex_box_half_extents_map(
                                Row_map<std::array<double, 3>, 3, double, Key>{box_half_extents ? box_half_extents->data()
@@ -448,7 +450,7 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
                                CFP::vertex_box_center_map(
                                  Row_map<Point, 3, double, Key>{box_centers ? box_centers->data() : vertices.data()}, np))));
     else
-      result = CF::fair_interfaces(soup.points, soup.triangles, soup.labels, options.epsilon, settings, np);
+      result = fair_with(np);
     for(std::size_t i = 0; i < n; ++i)
     {
       out_data[3 * i] = soup.points[i].x();
@@ -624,13 +626,8 @@ PYBIND11_MODULE(_core, m)
     .def_readwrite("epsilon", &Options::epsilon)
     .def_readwrite("bound", &Options::bound)
     .def_readwrite("method", &Options::method)
-    .def_readwrite("objective", &Options::objective)
-    .def_readwrite("fidelity_weight", &Options::fidelity_weight)
-    .def_readwrite("sliver_barrier_weight", &Options::sliver_barrier_weight)
-    .def_readwrite("energy_decrease_threshold", &Options::energy_decrease_threshold)
-    .def_readwrite("max_iterations", &Options::max_iterations)
-    .def_readwrite("initial_smoothing_steps", &Options::initial_smoothing_steps)
-    .def_readwrite("conjugate_gradient_iterations", &Options::conjugate_gradient_iterations);
+    .def_readwrite("given", &Options::given)
+    .def("max_iterations", [](const Options& options) { return options.settings().options.max_iterations; });
 
   m.def("fair", &fair, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("tolerance"),
         py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("progress"));
@@ -649,20 +646,23 @@ PYBIND11_MODULE(_core, m)
   m.def(
     "default_settings",
     [](PMP::Constrained_fairing_method method) {
-      const CF::Fairing_settings settings(method);
+      CF::Fairing_settings settings(method);
       py::dict d;
-      d["max_iterations"] = settings.options.max_iterations;
-      d["energy_decrease_threshold"] = settings.options.threshold;
+      CF::for_each_named_setting(settings,
+                                 [&d](const char* name, const char*, auto, const auto& field) { d[name] = field; });
       d["energy_decrease_window"] = settings.options.window;
       d["energy_remaining_fraction"] = settings.options.remaining_fraction;
-      d["initial_smoothing_steps"] = settings.options.smoothing_steps;
-      d["conjugate_gradient_iterations"] = settings.options.cg_iterations;
-      d["fidelity_weight"] = settings.fidelity_weight;
-      d["sliver_barrier_weight"] = settings.sliver_barrier_weight;
-      d["objective"] = settings.objective;
       return d;
     },
     py::arg("method"));
+  m.def("named_settings", [] {
+    CF::Fairing_settings settings;
+    py::list table;
+    CF::for_each_named_setting(settings, [&table](const char* name, const char* parameter, auto, const auto&) {
+      table.append(py::make_tuple(name, parameter));
+    });
+    return table;
+  });
   m.def(
     "parse_epsilon",
     [](const std::string& text) {

@@ -7,10 +7,13 @@
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_driver.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Mesh_input.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/read_named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -18,14 +21,18 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// The named parameters read once; the driver does the rest.
-// The settings read from `np` once; the per-vertex maps, the callback and the linear solver are
-// read by the driver.
+// Both overloads: every named parameter read once, here; the driver does the rest on the faces
+// of `region`, or on the whole mesh if it is null.
 template <typename TriangleMesh, typename FaceRange, typename NamedParameters>
 Constrained_fairing_result constrained_fairing(const FaceRange* region, TriangleMesh& tmesh, double epsilon,
                                                const NamedParameters& np)
 {
-  return run_fairing_driver(region, tmesh, epsilon, read_fairing_settings(np), np);
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                                get_property_map(CGAL::vertex_point, tmesh));
+  Mesh_input<TriangleMesh, std::remove_const_t<decltype(vpm)>, FaceRange> input(tmesh, vpm, region);
+  const auto callback = read_iteration_callback(np);
+  return run_fairing_driver(input, epsilon, read_fairing_settings(np), read_vertex_maps(np),
+                            Iteration_callback(callback), read_sparse_linear_solver(np));
 }
 
 } // namespace Constrained_fairing

@@ -6,8 +6,9 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_driver.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_driver.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_input.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/read_named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -75,7 +76,10 @@ Constrained_fairing_result constrained_fairing_of_interfaces(PointRange& points,
                                                              const NamedParameters& np = parameters::default_values())
 {
   namespace CF = internal::Constrained_fairing;
-  return CF::fair_interfaces(points, triangles, face_labels, epsilon, CF::read_fairing_settings(np), np);
+  CF::Interface_input<PointRange, TriangleRange, LabelPairRange> input(points, triangles, face_labels);
+  const auto callback = CF::read_iteration_callback(np);
+  return CF::run_fairing_driver(input, epsilon, CF::read_fairing_settings(np), CF::read_vertex_maps(np),
+                                CF::Iteration_callback(callback), CF::read_sparse_linear_solver(np));
 }
 
 } // namespace Polygon_mesh_processing

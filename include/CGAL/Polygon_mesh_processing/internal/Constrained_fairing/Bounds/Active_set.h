@@ -15,7 +15,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_ACTIVE_SET_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 
 #include <CGAL/assertions.h>

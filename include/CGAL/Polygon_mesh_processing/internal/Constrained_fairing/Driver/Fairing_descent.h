@@ -5,15 +5,15 @@
 // smoothed start, kept only if it lowers the objective, so that the result never has a higher
 // objective than the input; the descent by the method the settings name; then re-seeded
 // descents around the folds it left (Fold_repair.h), with the same solver. It fills the
-// result's energies, counts, status and message; the driver reports the rest (with
-// count_bound() below) and writes back.
+// result's energies, counts, status and message; the driver (Fairing_driver.h) reports the rest
+// and writes back.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DESCENT_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DESCENT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
@@ -21,7 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_lbfgs.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Smoothed_start.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
 
@@ -32,27 +32,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
-
-// Whether vertex i of X lies on its bound (a vertex that does not move does not count).
-template <typename Bound>
-bool is_at_bound(const Bound& bound, const std::vector<bool>& moving, const Points& X, std::size_t i)
-{
-  typename Bound::Face face;
-  return moving[i] && bound.size(i) > 0 && bound.is_on_boundary(X, i, face);
-}
-
-// The result's largest deviation and its counts of the vertices at their bound and fixed.
-template <typename Bound>
-void count_bound(const Bound& bound, const std::vector<bool>& moving, const Points& X,
-                 Constrained_fairing_result& result)
-{
-  result.max_deviation = bound.max_deviation(X);
-  for(std::size_t i = 0; i < moving.size(); ++i)
-  {
-    result.number_of_vertices_at_bound += is_at_bound(bound, moving, X, i);
-    result.number_of_fixed_vertices += !moving[i] || !(bound.size(i) > 0);
-  }
-}
 
 template <typename Bound, typename SparseLinearSolver>
 class Fairing_descent

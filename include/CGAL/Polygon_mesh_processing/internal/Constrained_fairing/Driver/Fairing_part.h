@@ -29,6 +29,7 @@ public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
+  // `is_constrained(v)`: whether the user fixed vertex v.
   // The whole mesh: no list is stored, the vertices are those of `tmesh` in their order.
   template <typename IsConstrained>
   Fairing_part(const TriangleMesh& tmesh, const IsConstrained& is_constrained)
@@ -36,7 +37,7 @@ public:
   {
     m_fixed.reserve(m_size);
     for(auto v : vertices(tmesh))
-      m_fixed.push_back(get(is_constrained, v));
+      m_fixed.push_back(is_constrained(v));
   }
 
   // A face range; `vertex_index` numbers the vertices in the order of vertices(tmesh).
@@ -72,7 +73,7 @@ public:
     {
       if(!get(taken, v))
         continue;
-      bool moves = !get(is_constrained, v);
+      bool moves = !is_constrained(v);
       for(auto f : faces_around_target(halfedge(v, tmesh), tmesh))
         moves = moves && (f == boost::graph_traits<TriangleMesh>::null_face() || get(in_region, f));
       m_vertices.push_back(v);

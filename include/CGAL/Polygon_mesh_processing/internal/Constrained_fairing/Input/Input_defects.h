@@ -3,8 +3,9 @@
 //
 // The input contract's defects, each with the one function that makes its error and message:
 // every check names a defect through these, whether it checks a mesh (Mesh_check.h), a
-// multi-label surface (Interface_check.h), the values of a call (Value_check.h,
-// Bound_parameters.h) or a polygon soup before it becomes a mesh (the front ends' soup check), so that a defect reads the same whichever path found it.
+// multi-label surface (Interface_check.h), the values of a call (Value_check.h) or a polygon
+// soup before it becomes a mesh (the front ends' soup check), so that a defect reads the same
+// whichever path found it.
 // Vertices and faces are named by their position, from 0, in the user's order.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INPUT_DEFECTS_H

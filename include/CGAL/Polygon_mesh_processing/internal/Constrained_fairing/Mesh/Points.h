@@ -7,7 +7,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POINTS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_POINTS_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <Eigen/Core>
 

@@ -23,7 +23,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
@@ -44,8 +44,7 @@ class Fairing_objective
 public:
   // `sliver_weight`: the weight of the barrier against slivers, 0 for none; `sliver_threshold`
   // the quality under which a triangle is a sliver.
-  Fairing_objective(const Hinge_mesh& mesh, const Points& X0, double sliver_weight,
-                    double sliver_threshold = Sliver_barrier::default_threshold)
+  Fairing_objective(const Hinge_mesh& mesh, const Points& X0, double sliver_weight, double sliver_threshold)
     : m_mesh(mesh), m_bending(mesh, X0), m_barrier(mesh, X0, sliver_weight, sliver_threshold)
   {
   }

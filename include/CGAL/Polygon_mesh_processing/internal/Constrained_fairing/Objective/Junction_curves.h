@@ -31,11 +31,9 @@ namespace Constrained_fairing {
 class Junction_curves
 {
 public:
-  // The weight w of the term, per point of a line, against the bending energy's hinges.
-  static constexpr double default_weight = 1;
-
   // `points[k]` = {p, i, n}: inner point i of a line and its neighbours, in the solver's order;
-  // X0 the input points.
+  // X0 the input points; `weight` the term's, per point of a line, against the bending
+  // energy's hinges.
   Junction_curves(const std::vector<std::array<Index, 3> >& points, const Points& X0, double weight)
     : m_points(points), m_coefficient(points.size())
   {

@@ -47,14 +47,9 @@ namespace Constrained_fairing {
 class Label_volumes
 {
 public:
-  // The weight w, per point, against the bending energy's hinges. Held exactly, from 1 to 30 the
-  // phantoms of benchmark/label_phantoms came out alike (4.60 to 4.67 times closer to the truth
-  // than the raw nets); above 1 the smallest angle fell on generated worst cases and atlases
-  // (random voxels of three labels: 2.9 degrees with no term, 3.3 at 1, 0.35 at 3).
-  static constexpr double default_weight = 1;
-
   // `triangles[f]` runs out of the region of the label numbered `sides[f][0]` into that of
-  // `sides[f][1]` (labels numbered 0, 1, ...); X0 the input points.
+  // `sides[f][1]` (labels numbered 0, 1, ...); X0 the input points; `weight` the term's, per
+  // point, against the bending energy's hinges.
   Label_volumes(const std::vector<std::array<Index, 3> >& triangles, const std::vector<std::array<Index, 2> >& sides,
                 const Points& X0, double weight)
   {

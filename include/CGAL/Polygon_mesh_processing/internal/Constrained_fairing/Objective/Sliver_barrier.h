@@ -6,8 +6,8 @@
 //
 //   B = nu * sum over the triangles of q < q0 of  (q0 / (q + q0 / 100) - 1)^2,
 //
-// q0 about the quality of a needle with a 3 degree angle (6 on label surfaces, set in
-// Interface_driver.h), nu the weight. Why: a hinge of the bending energy costs |e|^2 / A_e times
+// q0 about the quality of a needle with a 3 degree angle (6 on label surfaces; both in
+// Fairing_settings.h), nu the weight. Why: a hinge of the bending energy costs |e|^2 / A_e times
 // its bend, so the energy drops when an edge at a bend shrinks or a triangle there flattens, and
 // its minima are full of needles and caps (angles down to 0.0003 degree on the noisy bunny),
 // whatever else holds the vertices (a uniform Laplacian term along the surface, an edge length
@@ -32,7 +32,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 
@@ -50,16 +50,12 @@ namespace Constrained_fairing {
 class Sliver_barrier
 {
 public:
-  // sqrt(3) sin(3 degrees), within 0.2 % the quality of an isosceles needle of apex angle 3
-  // degrees.
-  static constexpr double default_threshold = 0.0906485352754803;
-
   // The threshold q0 of the needles of apex angle `degrees`: for a given smallest angle, the
   // isosceles needle has the largest quality (q = sqrt(3) / (cot a + cot b + cot c)), so every
   // triangle with a smaller angle has q < q0.
   static double threshold_of_angle(double degrees) { return std::sqrt(3.) * std::sin(degrees * CGAL_PI / 180); }
 
-  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight, double threshold = default_threshold)
+  Sliver_barrier(const Hinge_mesh& mesh, const Points& X0, double weight, double threshold)
     : m_mesh(mesh), m_weight(weight), m_threshold(threshold), m_unit_scaled(X0)
   {
     if(m_weight > 0)

@@ -1,0 +1,193 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A multi-label surface as the driver (Fairing_driver.h) fairs it: a soup of points, triangles
+// and the two labels of each triangle. What differs from a mesh:
+//  - its structure is checked by Interface_check.h, and its junction lines (Junction_lines.h)
+//    fix their ends and branches;
+//  - its triangles are oriented from their smaller label into their larger, and its hinges are
+//    the edges of exactly two triangles of one interface (where an interface meets itself along
+//    an edge, no hinge);
+//  - its objective adds the junction lines' term (Junction_curves.h) and the labels' volumes
+//    (Label_volumes.h), each label's held at its input value, and its barrier pushes back
+//    needles of a larger angle;
+//  - after the descent, the points of triangles that cross are pulled back (Crossing_repair.h).
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_part.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Interface_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Junction_lines.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+template <typename PointRange, typename TriangleRange, typename LabelPairRange>
+class Interface_input
+{
+  using Point = typename PointRange::value_type;
+
+public:
+  Interface_input(PointRange& points, const TriangleRange& triangles, const LabelPairRange& face_labels)
+    : m_points(points), m_triangles(triangles), m_face_labels(face_labels)
+  {
+    CGAL_precondition(face_labels.size() == triangles.size());
+  }
+
+  // The soup's structure; then its junction lines and its triangles, each oriented from its
+  // smaller label into its larger.
+  Input_error structure_error()
+  {
+    const std::size_t n = m_points.size(), m = m_triangles.size();
+    std::vector<std::size_t> interface_of;
+    std::vector<bool> flipped;
+    if(Input_error error = interface_error(n, m_triangles, m_face_labels, interface_of, flipped, m_sides))
+      return error;
+    m_junctions.emplace(n, m_sides, m_face_labels);
+    m_oriented.resize(m);
+    for(std::size_t f = 0; f < m; ++f)
+    {
+      const auto& t = m_triangles[f];
+      m_oriented[f] = flipped[f] ? std::array<Index, 3>{Index(t[0]), Index(t[2]), Index(t[1])}
+                                 : std::array<Index, 3>{Index(t[0]), Index(t[1]), Index(t[2])};
+    }
+    return {};
+  }
+
+  // The points that end or branch a junction line stay, and those the user fixed.
+  template <typename VertexMaps>
+  Interface_part part(const VertexMaps& maps) const
+  {
+    std::vector<bool> fixed = m_junctions->fixed;
+    for(std::size_t k = 0; k < fixed.size(); ++k)
+      fixed[k] = fixed[k] || maps.is_constrained(k);
+    return Interface_part(std::move(fixed));
+  }
+
+  Points input_points(const Interface_part& part) const
+  {
+    Points X0(static_cast<Eigen::Index>(part.size()), 3);
+    for(std::size_t k = 0; k < part.size(); ++k)
+      point(X0, k) = Eigen::Vector3d(CGAL::to_double(m_points[k].x()), CGAL::to_double(m_points[k].y()),
+                                     CGAL::to_double(m_points[k].z()));
+    return X0;
+  }
+
+  const std::vector<std::array<Index, 3> >& triangles(const Interface_part&) const { return m_oriented; }
+
+  void order(const Interface_part&, const std::vector<Index>& rank)
+  {
+    for(auto& t : m_oriented)
+      for(Index& v : t)
+        v = rank[v];
+    for(auto& line : m_junctions->inner)
+      for(Index& v : line)
+        v = rank[v];
+  }
+
+  // A hinge where exactly two triangles of one interface share an edge.
+  Hinge_mesh hinges(const Interface_part& part, const std::vector<bool>&) const
+  {
+    std::vector<std::array<Index, 2> > hinge_faces;
+    for(std::size_t i = 0, j = 0; i < m_sides.size(); i = j)
+    {
+      while(j < m_sides.size() && m_sides[j].same_edge(m_sides[i]) && m_sides[j].interface == m_sides[i].interface)
+        ++j;
+      if(j - i == 2)
+        hinge_faces.push_back({Index(m_sides[i].face), Index(m_sides[i + 1].face)});
+    }
+    return Hinge_mesh(part.size(), m_oriented, hinge_faces);
+  }
+
+  double sliver_threshold(const Fairing_settings& settings) const
+  {
+    return Sliver_barrier::threshold_of_angle(settings.interface_sliver_angle);
+  }
+
+  void add_terms(Fairing_objective& objective, const Points& X0, const Fairing_settings& settings)
+  {
+    m_curves.emplace(m_junctions->inner, X0, settings.junction_weight);
+    m_volumes.emplace(m_oriented, dense_label_sides(), X0, settings.label_volume_weight);
+    objective.add_junction_curves(*m_curves);
+    objective.add_label_volumes(*m_volumes);
+  }
+
+  template <typename Bound>
+  void repair(const Bound& bound, const std::vector<bool>& moving, const Points& X0, Points& X,
+              Fairing_objective& objective, Constrained_fairing_result& result) const
+  {
+    if(repair_crossings(m_oriented, bound, moving, X0, X) > 0)
+    {
+      result.final_energy = objective.value(X);
+      result.final_bending_energy = objective.bending_energy(X);
+    }
+  }
+
+  template <typename VertexMaps>
+  void clear_outputs(const VertexMaps&) const
+  {}
+
+  void write(std::size_t k, double x, double y, double z) { m_points[k] = Point(x, y, z); }
+
+private:
+  // The labels of each triangle numbered 0, 1, ... in increasing order, the smaller first.
+  std::vector<std::array<Index, 2> > dense_label_sides() const
+  {
+    using Label = std::decay_t<decltype(m_face_labels[0][0])>;
+    std::vector<Label> labels;
+    for(const auto& pair : m_face_labels)
+      labels.insert(labels.end(), pair.begin(), pair.end());
+    std::sort(labels.begin(), labels.end());
+    labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+    const auto number = [&labels](Label l) {
+      return Index(std::lower_bound(labels.begin(), labels.end(), l) - labels.begin());
+    };
+    std::vector<std::array<Index, 2> > sides;
+    sides.reserve(m_face_labels.size());
+    for(const auto& pair : m_face_labels)
+    {
+      const Index a = number(pair[0]), b = number(pair[1]);
+      sides.push_back({(std::min)(a, b), (std::max)(a, b)});
+    }
+    return sides;
+  }
+
+  PointRange& m_points;
+  const TriangleRange& m_triangles;
+  const LabelPairRange& m_face_labels;
+  std::vector<Interface_side> m_sides;
+  std::optional<Junction_lines> m_junctions;
+  std::vector<std::array<Index, 3> > m_oriented; // in the soup's numbering, then the solver's
+  std::optional<Junction_curves> m_curves;
+  std::optional<Label_volumes> m_volumes;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H

@@ -1,0 +1,44 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The points of a multi-label surface as the driver, the value check and the bounds see them
+// (the counterpart of Fairing_part.h for a mesh).
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// Point k is the key of the per-point maps and is named k in messages.
+class Interface_part
+{
+public:
+  explicit Interface_part(std::vector<bool> fixed) : m_fixed(std::move(fixed)) {}
+
+  std::size_t size() const { return m_fixed.size(); }
+  bool is_fixed(std::size_t k) const { return m_fixed[k]; }
+  std::size_t number(std::size_t k) const { return k; }
+  template <typename F>
+  void for_each_vertex(const F& f) const
+  {
+    for(std::size_t k = 0; k < m_fixed.size(); ++k)
+      f(k, k);
+  }
+
+private:
+  std::vector<bool> m_fixed;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H

@@ -1,0 +1,148 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A triangle mesh as the driver (Fairing_driver.h) fairs it: the whole mesh, or the part that a
+// face range moves (Fairing_part.h). Its vertices are named in messages by their position in
+// vertices(tmesh); its hinges are its interior edges; it has no terms of its own and no repair.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_part.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Mesh_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+template <typename TriangleMesh, typename VertexPointMap, typename FaceRange>
+class Mesh_input
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
+  using Part = Fairing_part<TriangleMesh>;
+  using Number_map = typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type;
+
+public:
+  // The faces of `region` move, or the whole mesh if it is null.
+  Mesh_input(TriangleMesh& tmesh, const VertexPointMap& vpm, const FaceRange* region)
+    : m_tmesh(tmesh), m_vpm(vpm), m_region(region), m_user_number(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh)),
+      m_vertex_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh))
+  {}
+
+  Input_error structure_error()
+  {
+    std::size_t count = 0;
+    for(auto v : vertices(m_tmesh))
+      put(m_user_number, v, count++);
+    return mesh_error(m_tmesh, m_user_number);
+  }
+
+  template <typename VertexMaps>
+  Part part(const VertexMaps& maps) const
+  {
+    const auto is_constrained = [&maps](vertex_descriptor v) { return maps.is_constrained(v); };
+    return m_region ? Part(*m_region, m_tmesh, m_user_number, is_constrained) : Part(m_tmesh, is_constrained);
+  }
+
+  Points input_points(const Part& part) const
+  {
+    Points X0(static_cast<Eigen::Index>(part.size()), 3);
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) {
+      const Point_3& p = get(m_vpm, v);
+      point(X0, k) = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    });
+    return X0;
+  }
+
+  // The triangles of the part, its vertices numbered in the part's order.
+  std::vector<std::array<Index, 3> > triangles(const Part& part) const
+  {
+    auto place = get(CGAL::dynamic_vertex_property_t<Index>(), m_tmesh);
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) { put(place, v, static_cast<Index>(k)); });
+    std::vector<std::array<Index, 3> > triangles;
+    const auto add = [&](auto f) {
+      const auto h = halfedge(f, m_tmesh);
+      triangles.push_back({get(place, source(h, m_tmesh)), get(place, target(h, m_tmesh)),
+                           get(place, target(next(h, m_tmesh), m_tmesh))});
+    };
+    if(part.triangles().empty())
+      for(auto f : faces(m_tmesh))
+        add(f);
+    else
+      for(auto f : part.triangles())
+        add(f);
+    return triangles;
+  }
+
+  void order(const Part& part, const std::vector<Index>& rank)
+  {
+    part.for_each_vertex([&](std::size_t k, vertex_descriptor v) { put(m_vertex_index, v, std::size_t(rank[k])); });
+  }
+
+  // With a face range, a hinge counts when one of its four vertices moves.
+  Hinge_mesh hinges(const Part& part, const std::vector<bool>& moving) const
+  {
+    if(!m_region)
+      return Hinge_mesh(m_tmesh, m_vertex_index);
+    return Hinge_mesh(m_tmesh, part.triangles(), part.size(), m_vertex_index, [&](const std::array<Index, 4>& v) {
+      return moving[v[0]] || moving[v[1]] || moving[v[2]] || moving[v[3]];
+    });
+  }
+
+  double sliver_threshold(const Fairing_settings& settings) const { return settings.sliver_threshold; }
+
+  void add_terms(Fairing_objective&, const Points&, const Fairing_settings&) {}
+
+  template <typename Bound>
+  void repair(const Bound&, const std::vector<bool>&, const Points&, Points&, Fairing_objective&,
+              Constrained_fairing_result&) const
+  {}
+
+  // With a face range, the output maps read 0 and false outside the part.
+  template <typename VertexMaps>
+  void clear_outputs(const VertexMaps& maps) const
+  {
+    if(!m_region)
+      return;
+    for(auto v : vertices(m_tmesh))
+    {
+      if constexpr(VertexMaps::has_deviation)
+        put(maps.deviation, v, 0);
+      if constexpr(VertexMaps::has_at_bound)
+        put(maps.at_bound, v, false);
+    }
+  }
+
+  void write(vertex_descriptor v, double x, double y, double z) { put(m_vpm, v, Point_3(x, y, z)); }
+
+private:
+  TriangleMesh& m_tmesh;
+  VertexPointMap m_vpm;
+  const FaceRange* m_region;
+  Number_map m_user_number;  // each vertex's position in vertices(tmesh)
+  Number_map m_vertex_index; // each vertex's place in the solver's order, from the order phase on
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H

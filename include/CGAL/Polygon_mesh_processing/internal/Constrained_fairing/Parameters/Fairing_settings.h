@@ -1,0 +1,147 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What a call asks besides its per-vertex maps (Vertex_maps.h), as plain values: the method, the
+// objective, the solver's options, the bound's shape, and the weights of the terms of a
+// multi-label surface. Every default lives here and only here, with why it was chosen. The
+// public functions fill these from their named parameters once (read_named_parameters.h), and
+// nothing below them sees a named parameter.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_SETTINGS_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_SETTINGS_H
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// The accurate objective's fidelity weight, chosen on the benchmark fairing_accuracy over its
+// whole set of meshes and noise levels (the user manual gives the alternatives' figures). Its
+// anchor is made by Fidelity_anchor.h.
+constexpr double default_fidelity_weight = 1e4;
+
+// The weight of the barrier against slivers (Sliver_barrier.h), per triangle: at 1, a needle of
+// 1.5 degrees costs 0.92, about as much as a right-angle bend between two equilateral triangles
+// (0.87). On the benchmark fairing_accuracy, weights 0.5, 1 and 2 gave the same distance to the
+// truth, normals and energies; the smallest angle over the set was 1.7, 1.8 and 2.2 degrees
+// (accurate objective) and 2.3, 2.6 and 2.7 (fairest).
+constexpr double default_sliver_barrier_weight = 1;
+
+// The quality under which a triangle of a mesh is a sliver to the barrier: sqrt(3) sin(3
+// degrees), within 0.2 % the quality of an isosceles needle of apex angle 3 degrees
+// (Sliver_barrier::threshold_of_angle()).
+constexpr double default_sliver_threshold = 0.0906485352754803;
+
+// The needles the barrier against slivers pushes back on a multi-label surface, by their angle in
+// degrees (3 on a mesh). Surface nets start from good triangles (45 degrees at least on cubic
+// voxels, 18 on 1 x 1 x 3), and users mesh their surfaces for simulation. On the benchmark's
+// balls (radii 24 and 17.3 voxels, cubic and 1 x 1 x 3) and three maps of 10 Voronoi labels
+// (96^3), the smallest angle was 2.6 to 3.0 degrees with 3, 4.5 to 4.9 with 5 and 5.5 to 5.9
+// with 6; the RMS distance to the true interfaces rose by 1 to 21 % from 3 to 6. With weight 0.3
+// instead of 1 the Voronoi maps kept angles of 4.7 degrees.
+constexpr double default_interface_sliver_angle = 6;
+
+// The weight of the junction lines' term of a multi-label surface (Junction_curves.h), per point
+// of a line, against the bending energy's hinges.
+constexpr double default_junction_weight = 1;
+
+// The weight of the labels' volumes of a multi-label surface (Label_volumes.h), per point,
+// against the bending energy's hinges. Held exactly, from 1 to 30 the phantoms of
+// benchmark/label_phantoms came out alike (4.60 to 4.67 times closer to the truth than the raw
+// nets); above 1 the smallest angle fell on generated worst cases and atlases (random voxels of
+// three labels: 2.9 degrees with no term, 3.3 at 1, 0.35 at 3).
+constexpr double default_label_volume_weight = 1;
+
+// The stopping rule of each method when the user sets none: the quasi-Newton method's energy
+// keeps decreasing in small, uneven steps, with plateaus of tens of iterations, long after the
+// noise is gone, so it is judged over 50 iterations and against a smaller threshold, and it
+// stops only once the decrease still to come, extrapolated from the last two windows, is at
+// most 1 % of the energy (Stopping_rule.h): on large meshes each iteration gains less, and the
+// threshold alone stopped the call early there. On energy traces of the noisy bunny with no
+// stopping rule (2000 iterations at 75 k, 300 k and 1.2 M triangles, 1000 at 4.8 M and 19.3 M),
+// 1 % stops within 1.5, 1.8 and 0.8 % of the energy of 1000 iterations up to 1.2 M, and runs on
+// at 4.8 M and 19.3 M, where the threshold alone stopped 2.9 and 7.7 % above it (after 704 and
+// 264 iterations; the smallest extrapolated remainder while the threshold held was 1.9 and
+// 1.5 %, so 2 % would have stopped at 19.3 M). It starts from a smoothed input
+// (Smoothed_start.h); the paper's methods start from the input.
+inline Solver_options default_options(Constrained_fairing_method method)
+{
+  Solver_options options;
+  if(method == Constrained_fairing_method::QUASI_NEWTON)
+  {
+    options.threshold = 1.25e-4;
+    options.window = 50;
+    options.remaining_fraction = 0.01;
+    options.max_iterations = 1000;
+    options.smoothing_steps = 16;
+  }
+  options.cauchy_steps_only = method == Constrained_fairing_method::PROJECTED_GRADIENT;
+  return options;
+}
+
+struct Fairing_settings
+{
+  explicit Fairing_settings(Constrained_fairing_method m = Constrained_fairing_method::QUASI_NEWTON)
+    : method(m), options(default_options(m))
+  {}
+
+  // The accurate objective: a fidelity term of weight `fidelity_weight` (> 0) is added.
+  bool is_accurate() const { return objective == Constrained_fairing_objective::ACCURATE && fidelity_weight > 0; }
+
+  // A box bound: asked for, or implied by a box parameter (a uniform half-extents or a map).
+  bool is_box() const { return deviation_bound == Deviation_bound::BOX || has_box_parameter; }
+
+  Constrained_fairing_method method;
+  Solver_options options;
+  Constrained_fairing_objective objective = Constrained_fairing_objective::FAIREST;
+  double fidelity_weight = default_fidelity_weight;
+  double sliver_barrier_weight = default_sliver_barrier_weight;
+  double sliver_threshold = default_sliver_threshold;
+  double interface_sliver_angle = default_interface_sliver_angle;
+  double junction_weight = default_junction_weight;
+  double label_volume_weight = default_label_volume_weight;
+  // The shape the user named, if any; whether a box parameter is given; the uniform box
+  // half-extents, if given.
+  std::optional<Deviation_bound> deviation_bound;
+  bool has_box_parameter = false;
+  std::optional<std::array<double, 3> > box_half_extents;
+};
+
+// The settings a user sets by name, each with its name in the front ends (the Python module's
+// keyword, the batch's option), its named parameter and its tag, and its field: the one table
+// from which read_fairing_settings() reads the named parameters and the Python binding its
+// options and defaults (test_defaults.py checks the binding's signature and docstrings against
+// it). The method is not in it: it chooses the others' defaults (default_options()).
+template <typename Settings, typename F>
+void for_each_named_setting(Settings& settings, const F& f)
+{
+  f("max_iterations", "number_of_iterations", internal_np::number_of_iterations, settings.options.max_iterations);
+  f("energy_decrease_threshold", "energy_decrease_threshold", energy_decrease_threshold, settings.options.threshold);
+  f("initial_smoothing_steps", "initial_smoothing_steps", initial_smoothing_steps, settings.options.smoothing_steps);
+  f("conjugate_gradient_iterations", "conjugate_gradient_iterations", conjugate_gradient_iterations,
+    settings.options.cg_iterations);
+  f("objective", "fairing_objective", fairing_objective, settings.objective);
+  f("fidelity_weight", "fidelity_weight", fidelity_weight, settings.fidelity_weight);
+  f("sliver_barrier_weight", "sliver_barrier_weight", sliver_barrier_weight, settings.sliver_barrier_weight);
+}
+
+// The tag of an undocumented named parameter that gives all the settings at once, which the
+// named parameters then override: a front end whose user sets them by name at run time (the
+// Python module) calls the public functions with it.
+enum fairing_settings_t { fairing_settings };
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_SETTINGS_H
