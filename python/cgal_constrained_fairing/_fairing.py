@@ -324,10 +324,8 @@ def estimate_noise_level(vertices: ArrayLike, faces: ArrayLike) -> float:
 
     Parameters
     ----------
-    vertices : array_like, shape (n, 3)
-        Vertex positions, any floating-point dtype.
-    faces : array_like, shape (m, 3)
-        Triangles as vertex indices, any integer dtype; manifold and consistently oriented.
+    vertices, faces : array_like
+        As in `mean_edge_length`.
 
     Returns
     -------
@@ -337,7 +335,7 @@ def estimate_noise_level(vertices: ArrayLike, faces: ArrayLike) -> float:
     Raises
     ------
     InputError
-        As `fair`, for the arrays and the mesh they make.
+        As `mean_edge_length`.
     """
     return _measure(_core.estimate_noise_level, vertices, faces)
 

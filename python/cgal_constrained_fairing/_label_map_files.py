@@ -31,7 +31,7 @@ def read_label_map(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarr
     Parameters
     ----------
     path : str or os.PathLike
-        The file; its extension names the format.
+        A ``.nii``, ``.nii.gz`` or ``.npy`` file.
 
     Returns
     -------

@@ -1,5 +1,6 @@
 """The batch's tasks: which files to fair, and their tasks on a local or a given Dask cluster."""
 
+import contextlib
 import inspect
 import os
 import shutil
@@ -154,15 +155,25 @@ def import_distributed():
     return distributed
 
 
-def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dict[str, Any],
-               threads: int) -> Row:
-    """The task of one file, run in a worker: read, fair, write; never raises."""
+@contextlib.contextmanager
+def _task(path: str, threads: int):
+    """A task's row, filled by the ``with`` block, which may raise: the error goes into the row,
+    with the time taken."""
     start = time.perf_counter()
     row = empty_row(path)
     row["worker"] = _worker_address()
-    partial = None
     try:
         set_max_threads(threads)
+        yield row
+    except Exception as error:
+        row.update(status="error", error=_describe(error))
+    row["seconds"] = time.perf_counter() - start
+
+
+def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dict[str, Any],
+               threads: int) -> Row:
+    """The task of one file, run in a worker: read, fair, write; never raises."""
+    with _task(path, threads) as row:
         V, F = read_mesh(path)
         row.update(vertices=int(V.shape[0]), faces=int(F.shape[0]))
         epsilon = mesh_epsilon(eps, V, F)
@@ -171,19 +182,14 @@ def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dic
         # The temporary keeps the extension: the writer is chosen by it.
         stem, ext = os.path.splitext(os.path.basename(output))
         partial = os.path.join(os.path.dirname(output), f".{stem}.partial{ext}")
-        write_mesh(partial, W, F)
-        os.replace(partial, output)
-        partial = None
-        _record(row, report, output)
-    except Exception as error:
-        row.update(status="error", error=_describe(error))
-    finally:
-        if partial is not None:
-            try:
+        try:
+            write_mesh(partial, W, F)
+            os.replace(partial, output)
+        except BaseException:
+            with contextlib.suppress(OSError):
                 os.remove(partial)
-            except OSError:
-                pass
-    row["seconds"] = time.perf_counter() - start
+            raise
+        _record(row, report, output)
     return row
 
 
@@ -192,32 +198,24 @@ def _fair_label_map(path: str, output: str, label_format: str, fair_options: Dic
     """The task of one label map, run in a worker: its labels' surfaces, faired together within
     their voxels, each written in world coordinates to ``output/label_<L>.<format>``; the
     folder is renamed into place once complete. Never raises."""
-    start = time.perf_counter()
-    row = empty_row(path)
-    row["worker"] = _worker_address()
-    partial = None
-    try:
-        set_max_threads(threads)
+    with _task(path, threads) as row:
         labels, affine = read_label_map(path)
         result = label_surfaces(labels, affine=affine, **fair_options)
         row.update(vertices=int(result.vertices.shape[0]), faces=int(result.faces.shape[0]),
                    labels=int(result.labels.size))
         partial = os.path.join(os.path.dirname(output), f".{os.path.basename(output)}.partial")
         shutil.rmtree(partial, ignore_errors=True)
-        os.makedirs(partial)
-        for label in result.labels.tolist():
-            surface = os.path.join(partial, f"label_{label}.{label_format}")
-            write_mesh(surface, *result.surface(label))
-        shutil.rmtree(output, ignore_errors=True)  # an earlier output, with force
-        os.replace(partial, output)
-        partial = None
-        _record(row, result.report, output)
-    except Exception as error:
-        row.update(status="error", error=_describe(error))
-    finally:
-        if partial is not None:
+        try:
+            os.makedirs(partial)
+            for label in result.labels.tolist():
+                surface = os.path.join(partial, f"label_{label}.{label_format}")
+                write_mesh(surface, *result.surface(label))
+            shutil.rmtree(output, ignore_errors=True)  # an earlier output, with force
+            os.replace(partial, output)
+        except BaseException:
             shutil.rmtree(partial, ignore_errors=True)
-    row["seconds"] = time.perf_counter() - start
+            raise
+        _record(row, result.report, output)
     return row
 
 
