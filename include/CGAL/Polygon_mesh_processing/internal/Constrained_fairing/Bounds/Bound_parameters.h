@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the settings and the per-vertex maps ask of each vertex that takes part in the fairing,
-// once the input check (Bound_check.h) accepted it, read and turned into the solver's Ball_bound
+// once the input check (Value_check.h) accepted it, read and turned into the solver's Ball_bound
 // or Box_bound, which holds it from then on:
 //  - its tolerance t_i = min(epsilon, vertex_tolerance_map(v)), or 0 for a fixed vertex;
 //  - for the box, its half-extents min(t_i, H_i) per axis, H_i from vertex_box_half_extents_map
@@ -16,12 +16,10 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -32,13 +30,14 @@ namespace Constrained_fairing {
 class Bound_parameters
 {
 public:
-  // Reads what `maps` and `settings` ask of the vertices of `part`, which the input check
-  // (Bound_check.h) accepted, storing vertex k of the part at rank[k], its place in the solver's
-  // order.
+  // Reads what `maps` ask of the vertices of `part`, which the input check (Value_check.h)
+  // accepted, storing vertex k of the part at rank[k], its place in the solver's order; `box`:
+  // whether the bound is the box, whose half-extents are `uniform_extents` where `maps` give
+  // none (infinite: the tolerance alone).
   template <typename Part, typename VertexMaps>
-  Bound_parameters(const Part& part, const std::vector<Index>& rank, double epsilon, const Fairing_settings& settings,
-                   const VertexMaps& maps)
-    : m_box(settings.is_box()), m_epsilon(epsilon), m_uniform_extents(uniform_extents(settings))
+  Bound_parameters(const Part& part, const std::vector<Index>& rank, double epsilon, bool box,
+                   const std::array<double, 3>& uniform_extents, const VertexMaps& maps)
+    : m_box(box), m_epsilon(epsilon), m_uniform_extents(uniform_extents[0], uniform_extents[1], uniform_extents[2])
   {
     const std::size_t n = part.size();
     bool any_fixed = false;
@@ -79,15 +78,6 @@ public:
       return (std::min)(maps.given_tolerance(v), epsilon);
     else
       return epsilon;
-  }
-
-  // The box half-extents of every vertex without its own, before its tolerance caps them.
-  static Eigen::Vector3d uniform_extents(const Fairing_settings& settings)
-  {
-    if(!settings.box_half_extents)
-      return Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    const std::array<double, 3>& h = *settings.box_half_extents;
-    return Eigen::Vector3d(h[0], h[1], h[2]);
   }
 
   // The bound on the input points X0 (in the solver's order); the ball takes over the data read.

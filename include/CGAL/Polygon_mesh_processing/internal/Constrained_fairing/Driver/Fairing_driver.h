@@ -100,7 +100,7 @@ Constrained_fairing_result run_fairing_driver(Input& input, double epsilon, cons
 
   // order
   const std::vector<Index> rank = hilbert_rank(X0);
-  Bound_parameters bounds(part, rank, epsilon, settings, maps);
+  Bound_parameters bounds(part, rank, epsilon, settings.is_box(), settings.uniform_box_half_extents(), maps);
   {
     Points ordered(X0.rows(), 3);
     for(std::size_t k = 0; k < part.size(); ++k)

@@ -17,6 +17,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -66,7 +67,8 @@ inline Input_error bound_shape_error(const Fairing_settings& settings)
 
 inline Input_error box_half_extents_error(const Fairing_settings& settings)
 {
-  const Eigen::Vector3d h = Bound_parameters::uniform_extents(settings);
+  const std::array<double, 3> given = settings.uniform_box_half_extents();
+  const Eigen::Vector3d h(given[0], given[1], given[2]);
   return !settings.box_half_extents || are_valid_box_extents(h)
            ? Input_error()
            : invalid_box_extents_error("box_half_extents", h[0], h[1], h[2]);
@@ -110,7 +112,8 @@ Input_error outside_box_error(const Part& part, const Points& X0, double epsilon
   Input_error error;
   if constexpr(VertexMaps::has_box_center)
   {
-    const Eigen::Vector3d uniform = Bound_parameters::uniform_extents(settings);
+    const std::array<double, 3> given = settings.uniform_box_half_extents();
+    const Eigen::Vector3d uniform(given[0], given[1], given[2]);
     part.for_each_vertex([&](std::size_t k, const auto& v) {
       if(error || part.is_fixed(k))
         return;

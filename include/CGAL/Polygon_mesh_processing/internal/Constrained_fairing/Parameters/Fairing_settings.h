@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <optional>
 
 namespace CGAL {
@@ -99,6 +100,14 @@ struct Fairing_settings
 
   // A box bound: asked for, or implied by a box parameter (a uniform half-extents or a map).
   bool is_box() const { return deviation_bound == Deviation_bound::BOX || has_box_parameter; }
+
+  // The box half-extents of every vertex without its own, before its tolerance caps them:
+  // infinite (the tolerance alone) unless given.
+  std::array<double, 3> uniform_box_half_extents() const
+  {
+    constexpr double none = std::numeric_limits<double>::infinity();
+    return box_half_extents ? *box_half_extents : std::array<double, 3>{none, none, none};
+  }
 
   Constrained_fairing_method method;
   Solver_options options;
