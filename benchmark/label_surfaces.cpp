@@ -14,6 +14,7 @@
 //   label_surfaces [--runs N] [--threads K] [--size 256] [--margin M]
 
 #include "label_soup.h"
+#include "../test/ball_phantom.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
@@ -41,46 +42,6 @@ using namespace label_soup;
 // The margin of the boxes (--margin, default label_box_margin).
 double box_margin = PMP::label_box_margin;
 
-// The ball phantom: centre c, radius R, cut by x = t z.
-constexpr double tilt = 0.3;
-
-struct Ball
-{
-  double c, R;
-
-  // RMS distances to the sphere, to the plane and to the triple circle, and all points together.
-  std::array<double, 4> distances(const Soup& soup, const std::vector<Point>& P) const
-  {
-    const double norm = std::sqrt(1 + tilt * tilt);
-    std::array<double, 4> sum{0, 0, 0, 0};
-    std::array<std::size_t, 4> count{0, 0, 0, 0};
-    for(std::size_t v = 0; v < P.size(); ++v)
-    {
-      const double x = P[v].x() - c, y = P[v].y() - c, z = P[v].z() - c;
-      const double to_plane = (x - tilt * z) / norm, to_sphere = std::sqrt(x * x + y * y + z * z) - R;
-      const std::set<Label>& a = soup.around[v];
-      double d2;
-      int kind;
-      if(a == std::set<Label>{0, 1} || a == std::set<Label>{0, 2})
-        d2 = to_sphere * to_sphere, kind = 0;
-      else if(a == std::set<Label>{1, 2})
-        d2 = to_plane * to_plane, kind = 1;
-      else
-      {
-        const double px = x - to_plane / norm, pz = z + tilt * to_plane / norm;
-        const double in_plane = std::sqrt(px * px + y * y + pz * pz) - R;
-        d2 = to_plane * to_plane + in_plane * in_plane, kind = 2;
-      }
-      sum[std::size_t(kind)] += d2, ++count[std::size_t(kind)];
-      sum[3] += d2, ++count[3];
-    }
-    std::array<double, 4> rms;
-    for(std::size_t k = 0; k < 4; ++k)
-      rms[k] = std::sqrt(sum[k] / double((std::max)(count[k], std::size_t(1))));
-    return rms;
-  }
-};
-
 // Each label's closed surface faired alone, in the same boxes: the time of all of them.
 double fair_separately(const Soup& soup, const std::vector<Label>& labels, int runs)
 {
@@ -104,29 +65,20 @@ void ball_case(const std::array<double, 3>& spacing, int runs)
 {
   const std::size_t n = 64;
   const std::array<std::size_t, 3> size{n, n, std::size_t(double(n) / spacing[2])};
-  const Ball ball{31.5, 24};
-  std::vector<Label> labels(size[0] * size[1] * size[2], 0);
-  for(std::size_t i = 0; i < size[0]; ++i)
-    for(std::size_t j = 0; j < size[1]; ++j)
-      for(std::size_t k = 0; k < size[2]; ++k)
-      {
-        const double x = double(i) * spacing[0] - ball.c, y = double(j) * spacing[1] - ball.c,
-                     z = double(k) * spacing[2] - ball.c;
-        if(x * x + y * y + z * z < ball.R * ball.R)
-          labels[(i * size[1] + j) * size[2] + k] = x < tilt * z ? 1 : 2;
-      }
+  const test::Ball_phantom ball{31.5, 24};
+  const std::vector<Label> labels = ball.labels<Label>(size, spacing);
   const Soup soup = make_soup(labels, size, spacing, box_margin);
 
   // The clamped Laplacian at its best count, by the RMS distance of all points.
   const Clamped_laplacian laplacian(soup);
   std::vector<Point> L = soup.points, best_L = L;
   std::size_t best_count = 0, done = 0;
-  double best = ball.distances(soup, L)[3];
+  double best = ball.distances(L, soup.around)[3];
   for(std::size_t count = 1; count <= 1024; count *= 2)
   {
     for(; done < count; ++done)
       laplacian.step(L);
-    const double rms = ball.distances(soup, L)[3];
+    const double rms = ball.distances(L, soup.around)[3];
     if(rms < best)
       best = rms, best_count = count, best_L = L;
   }
@@ -139,7 +91,8 @@ void ball_case(const std::array<double, 3>& spacing, int runs)
     for(int c = 0; c < 3; ++c)
       in_box = in_box && std::abs(P[v][c] - soup.points[v][c]) <= soup.half_extents[v][std::size_t(c)];
 
-  const auto raw = ball.distances(soup, soup.points), lap = ball.distances(soup, best_L), ours = ball.distances(soup, P);
+  const auto raw = ball.distances(soup.points, soup.around), lap = ball.distances(best_L, soup.around),
+             ours = ball.distances(P, soup.around);
   std::cout << "ball cut by a plane, " << size[0] << " x " << size[1] << " x " << size[2] << " voxels of " << spacing[0]
             << " x " << spacing[1] << " x " << spacing[2] << ": " << soup.points.size() << " points, "
             << soup.triangles.size() << " triangles\n"

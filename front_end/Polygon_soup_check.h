@@ -15,6 +15,7 @@
 #ifndef CONSTRAINED_FAIRING_FRONT_END_POLYGON_SOUP_CHECK_H
 #define CONSTRAINED_FAIRING_FRONT_END_POLYGON_SOUP_CHECK_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Face_corners.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
@@ -47,15 +48,8 @@ Input_error polygon_soup_error(std::size_t number_of_points, const PolygonRange&
     const std::size_t k = static_cast<std::size_t>(std::size(polygon));
     if(k < 3)
       return CF::too_few_corners_error(f, k);
-    for(std::size_t c = 0; c < k; ++c)
-    {
-      const std::size_t v = static_cast<std::size_t>(polygon[c]);
-      if(v >= number_of_points)
-        return CF::missing_vertex_error(f, v, number_of_points);
-      for(std::size_t d = 0; d < c; ++d)
-        if(static_cast<std::size_t>(polygon[d]) == v)
-          return CF::repeated_vertex_error(f, v);
-    }
+    if(Input_error error = CF::face_corner_error(f, polygon, number_of_points))
+      return error;
     corner_start[f + 1] = corner_start[f] + k;
   }
   // The arrays below, like the solver's (Points.h), number the vertices and corners in 32 bits.

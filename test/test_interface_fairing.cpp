@@ -18,6 +18,7 @@
 //    on average (the bending energy alone kept it at or outside them);
 //  - bad soups and values are rejected with their defect, the points left bit-identical.
 
+#include "ball_phantom.h"
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
@@ -47,7 +48,7 @@ using Label = std::int32_t;
 using Triangle = std::array<std::size_t, 3>;
 using Labels = std::array<Label, 2>;
 
-constexpr double centre = 15.5, radius = 10, tilt = 0.3;
+constexpr double centre = 15.5, radius = 10;
 
 struct Soup
 {
@@ -58,22 +59,12 @@ struct Soup
 };
 
 // Labels 1 and 2: the ball on either side of the plane x = tilt z; 3: a cap over it where y > 6.
+const test::Ball_phantom ball{centre, radius, true};
+
 Soup phantom(const std::array<double, 3>& spacing)
 {
   const std::array<std::size_t, 3> size{32, 32, std::size_t(32 / spacing[2])};
-  std::vector<Label> labels(size[0] * size[1] * size[2], 0);
-  for(std::size_t i = 0; i < size[0]; ++i)
-    for(std::size_t j = 0; j < size[1]; ++j)
-      for(std::size_t k = 0; k < size[2]; ++k)
-      {
-        const double x = double(i) - centre, y = double(j) - centre, z = double(k) * spacing[2] - centre;
-        const double r = std::sqrt(x * x + y * y + z * z);
-        Label& l = labels[(i * size[1] + j) * size[2] + k];
-        if(r < radius)
-          l = x < tilt * z ? 1 : 2;
-        else if(r < radius + 2.5 && y > 6)
-          l = 3;
-      }
+  const std::vector<Label> labels = ball.labels<Label>(size, spacing);
   Soup soup;
   PMP::label_surface_nets(labels.data(), size, spacing, {0, 0, 0}, soup.points, soup.triangles, soup.face_labels,
                           soup.half_extents);
@@ -88,28 +79,8 @@ std::array<double, 3> distances(const Soup& soup, const std::vector<Point>& poin
   for(std::size_t f = 0; f < soup.triangles.size(); ++f)
     for(std::size_t v : soup.triangles[f])
       around[v].insert(soup.face_labels[f].begin(), soup.face_labels[f].end());
-  const double norm = std::sqrt(1 + tilt * tilt);
-  std::array<double, 3> sum{0, 0, 0};
-  std::array<std::size_t, 3> count{0, 0, 0};
-  for(std::size_t v = 0; v < points.size(); ++v)
-  {
-    const double x = points[v].x() - centre, y = points[v].y() - centre, z = points[v].z() - centre;
-    const double to_plane = (x - tilt * z) / norm, to_sphere = std::sqrt(x * x + y * y + z * z) - radius;
-    const std::set<Label>& a = around[v];
-    if(a == std::set<Label>{0, 1} || a == std::set<Label>{0, 2})
-      sum[0] += to_sphere * to_sphere, ++count[0];
-    else if(a == std::set<Label>{1, 2})
-      sum[1] += to_plane * to_plane, ++count[1];
-    else if(a == std::set<Label>{0, 1, 2})
-    {
-      // to the circle: off the plane, and off the sphere within it
-      const double px = x - to_plane / norm, pz = z + tilt * to_plane / norm;
-      const double in_plane = std::sqrt(px * px + y * y + pz * pz) - radius;
-      sum[2] += to_plane * to_plane + in_plane * in_plane, ++count[2];
-    }
-  }
-  return {std::sqrt(sum[0] / double(count[0])), std::sqrt(sum[1] / double(count[1])),
-          std::sqrt(sum[2] / double(count[2]))};
+  const std::array<double, 4> rms = ball.distances(points, around);
+  return {rms[0], rms[1], rms[2]};
 }
 
 void check_fairing(const std::array<double, 3>& spacing)

@@ -24,6 +24,7 @@
 #include "front_end/Label_map_file.h"
 #include "front_end/Mean_edge_length.h"
 #include "front_end/Mesh_file.h"
+#include "front_end/Voxel_frame.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -332,22 +333,10 @@ int fair_label_map(const Options& options, const std::string& in)
   const std::string read_error = FE::read_label_map(in, map);
   if(!read_error.empty())
     return fail(read_error);
-  std::array<double, 3> spacing;
-  double axes[3][3];
-  for(std::size_t c = 0; c < 3; ++c)
-  {
-    spacing[c] = std::sqrt(map.affine[0][c] * map.affine[0][c] + map.affine[1][c] * map.affine[1][c] +
-                           map.affine[2][c] * map.affine[2][c]);
-    if(!(spacing[c] > 0) || !std::isfinite(spacing[c]))
-      return fail(in + ": its affine maps voxel axis " + std::to_string(c) + " to no direction");
-    for(std::size_t r = 0; r < 3; ++r)
-      axes[r][c] = map.affine[r][c] / spacing[c];
-  }
-  const double determinant = axes[0][0] * (axes[1][1] * axes[2][2] - axes[1][2] * axes[2][1]) -
-                             axes[0][1] * (axes[1][0] * axes[2][2] - axes[1][2] * axes[2][0]) +
-                             axes[0][2] * (axes[1][0] * axes[2][1] - axes[1][1] * axes[2][0]);
-  if(!(std::abs(determinant) > 1e-12))
-    return fail(in + ": its affine maps the voxel axes to dependent directions");
+  const FE::Voxel_frame frame(map.affine);
+  if(!frame.error.empty())
+    return fail(in + ": " + frame.error);
+  const std::array<double, 3>& spacing = frame.spacing;
 
   std::vector<K::Point_3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
@@ -385,12 +374,10 @@ int fair_label_map(const Options& options, const std::string& in)
     for(vertex_descriptor v : vertices(mesh))
     {
       const K::Point_3& p = mesh.point(v);
-      double w[3];
-      for(std::size_t r = 0; r < 3; ++r)
-        w[r] = axes[r][0] * p.x() + axes[r][1] * p.y() + axes[r][2] * p.z() + map.affine[r][3];
+      const std::array<double, 3> w = frame.to_world({p.x(), p.y(), p.z()});
       mesh.point(v) = K::Point_3(w[0], w[1], w[2]);
     }
-    if(determinant < 0)
+    if(frame.mirrors)
       PMP::reverse_face_orientations(mesh);
     const std::string file = (partial / ("label_" + std::to_string(label) + "." + format)).string();
     if(!CGAL::IO::write_polygon_mesh(file, mesh, CGAL::parameters::stream_precision(17).verbose(false)))

@@ -176,20 +176,17 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
 
 
 class _Frame:
-    """An affine split into the voxels' spacing and the rigid move (or mirror) into the world."""
+    """An affine split into the voxels' spacing and the rigid move (or mirror) into the world,
+    as the command-line tool splits it."""
 
     def __init__(self, affine):
         A = numbers_array(affine, "affine", [(4, 4)])
-        if not np.isfinite(A).all():
-            raise invalid("affine must be finite")
-        self.spacing = np.linalg.norm(A[:3, :3], axis=0)
-        volume = abs(np.linalg.det(A[:3, :3]))
-        if not (self.spacing > 0).all() or volume <= 1e-12 * self.spacing.prod():
-            raise invalid(f"affine must map the voxel axes to independent directions (got "
-                          f"{A[:3, :3].tolist()})")
-        self.axes = A[:3, :3] / self.spacing
-        self.translation = A[:3, 3].copy()
-        self.mirrors = np.linalg.det(self.axes) < 0
+        error, spacing, axes, translation, self.mirrors = _core.voxel_frame(A[:3].tolist())
+        if error:
+            raise invalid(f"{error} (got {A[:3, :3].tolist()})")
+        self.spacing = np.array(spacing)
+        self.axes = np.array(axes)
+        self.translation = np.array(translation)
 
     def to_world(self, points: np.ndarray) -> np.ndarray:
         return points @ self.axes.T + self.translation

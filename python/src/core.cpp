@@ -18,6 +18,7 @@
 #include "front_end/Epsilon_grammar.h"
 #include "front_end/Mean_edge_length.h"
 #include "front_end/Mesh_file.h"
+#include "front_end/Voxel_frame.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -113,17 +114,15 @@ CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
   const std::int64_t* f = faces.data();
+  std::vector<std::array<std::int64_t, 3> > given(m);
+  for(std::size_t i = 0; i < m; ++i)
+    std::copy(f + 3 * i, f + 3 * i + 3, given[i].begin());
+  if(CF::Input_error error = FE::polygon_soup_error(n, given))
+    return error;
   std::vector<Triangle> triangles(m);
   for(std::size_t i = 0; i < m; ++i)
     for(std::size_t c = 0; c < 3; ++c)
-    {
-      const std::int64_t v = f[3 * i + c];
-      if(v < 0)
-        return CF::missing_vertex_error(i, v, n);
-      triangles[i][c] = static_cast<std::size_t>(v);
-    }
-  if(CF::Input_error error = FE::polygon_soup_error(n, triangles))
-    return error;
+      triangles[i][c] = static_cast<std::size_t>(given[i][c]);
   std::vector<Point> points;
   points.reserve(n);
   const double* p = vertices.data();
@@ -677,6 +676,13 @@ PYBIND11_MODULE(_core, m)
     py::arg("text"));
   m.attr("default_epsilon") = FE::default_epsilon_text;
   m.attr("label_box_margin") = PMP::label_box_margin;
+  m.def(
+    "voxel_frame",
+    [](const FE::Voxel_frame::Affine& affine) {
+      const FE::Voxel_frame frame(affine);
+      return py::make_tuple(frame.error, frame.spacing, frame.axes, frame.translation, frame.mirrors);
+    },
+    py::arg("affine"));
   m.def("label_surface_nets", &label_surface_nets, py::arg("labels"), py::arg("spacing"), py::arg("origin"),
         py::arg("background"));
   m.def("fair_interfaces", &fair_interfaces, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),

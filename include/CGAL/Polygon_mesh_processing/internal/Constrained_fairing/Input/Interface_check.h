@@ -12,6 +12,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_CHECK_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_CHECK_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Face_corners.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 
@@ -59,15 +60,6 @@ std::vector<Interface_side> interface_sides(const TriangleRange& triangles, cons
   return sides;
 }
 
-template <typename Integer>
-bool is_negative(Integer v)
-{
-  if constexpr(std::is_signed_v<Integer>)
-    return v < 0;
-  else
-    return false;
-}
-
 // The first defect of the surface of `n` points; on none, `interface_of` and `flipped` as for
 // interface_sides(), and `sides` its result, which the check walks through.
 template <typename TriangleRange, typename LabelPairRange>
@@ -82,14 +74,8 @@ Input_error interface_error(std::size_t n, const TriangleRange& triangles, const
     return no_faces_error();
   for(std::size_t f = 0; f < m; ++f)
   {
-    for(std::size_t c = 0; c < 3; ++c)
-    {
-      const auto v = triangles[f][c];
-      if(is_negative(v) || std::size_t(v) >= n)
-        return missing_vertex_error(f, v, n);
-      if(c > 0 && (triangles[f][0] == v || (c == 2 && triangles[f][1] == v)))
-        return repeated_vertex_error(f, std::size_t(v));
-    }
+    if(Input_error error = face_corner_error(f, triangles[f], n))
+      return error;
     if(face_labels[f][0] == face_labels[f][1])
       return same_labels_error(f);
   }
