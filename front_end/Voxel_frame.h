@@ -7,8 +7,8 @@
 // voxels, whose boxes are axis-aligned, then moved. The tool and the Python module both split
 // it here, so that they refuse the same affines in the same words.
 
-#ifndef CGAL_CONSTRAINED_FAIRING_FRONT_END_VOXEL_FRAME_H
-#define CGAL_CONSTRAINED_FAIRING_FRONT_END_VOXEL_FRAME_H
+#ifndef CONSTRAINED_FAIRING_FRONT_END_VOXEL_FRAME_H
+#define CONSTRAINED_FAIRING_FRONT_END_VOXEL_FRAME_H
 
 #include <array>
 #include <cmath>
@@ -71,4 +71,4 @@ struct Voxel_frame
 
 } // namespace Constrained_fairing_front_end
 
-#endif // CGAL_CONSTRAINED_FAIRING_FRONT_END_VOXEL_FRAME_H
+#endif // CONSTRAINED_FAIRING_FRONT_END_VOXEL_FRAME_H

@@ -105,7 +105,8 @@ double surface_rms(const Mesh& result, const Mesh& clean)
 double sliver_barrier(const Mesh& m0, const Mesh& m)
 {
   const test::Indexed in(m0), out(m);
-  return CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight, CF::default_sliver_threshold).value(out.X);
+  return CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight, CF::default_sliver_threshold)
+    .value(out.X);
 }
 
 // The bundled noisy elephant (noise radius 0.25 h): the accurate objective ends closer to the

@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Named_settings.h>
 
 #include <cmath>
 #include <cstdio>
@@ -132,12 +133,14 @@ int main()
   CHECK(states(manual, "`sliver_barrier_weight` (default " + number(q.sliver_barrier_weight) + ";"));
   CHECK(states(manual, "`fidelity_weight` (default \\f$ 10^" + std::to_string(exponent) + " \\f$;"));
   CHECK(states(manual, "waits until what is left to gain is at most " + remaining + " of the energy"));
-  CHECK(states(manual, "pushes back needles under " + number(q.interface_sliver_angle) + " degrees, not 3 as on meshes"));
+  CHECK(states(manual,
+               "pushes back needles under " + number(q.interface_sliver_angle) + " degrees, not 3 as on meshes"));
 
   // The README and the tool's usage.
   const std::string readme = text_of("README.md");
   CHECK(states(readme, "`number_of_iterations` (default " + std::to_string(q.options.max_iterations) + ")"));
   CHECK(states(readme, "is at most " + remaining + " of the energy"));
-  CHECK(states(text_of("tools/constrained_fairing.cpp"), "Default: " + Constrained_fairing_front_end::default_epsilon_text + ","));
+  CHECK(states(text_of("tools/constrained_fairing.cpp"),
+               "Default: " + Constrained_fairing_front_end::default_epsilon_text + ","));
   return test::report("test_documented_defaults");
 }

@@ -233,7 +233,9 @@ void check_elephant()
       // The objective is the bending energy plus the barrier, recomputed here on the output
       // (relative to the input, whose degenerate triangles it leaves out).
       const Indexed in(noisy), out(barred);
-      const double sliver = CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight, CF::default_sliver_threshold).value(out.X);
+      const double sliver =
+        CF::Sliver_barrier(in.hinges, in.X, CF::default_sliver_barrier_weight, CF::default_sliver_threshold)
+          .value(out.X);
       CHECK(r_plain.final_energy == r_plain.final_bending_energy);
       CHECK(std::abs(r.final_energy - (r.final_bending_energy + sliver)) <= 1e-9 * r.final_energy);
     }

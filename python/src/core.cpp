@@ -114,15 +114,17 @@ CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
   const std::int64_t* f = faces.data();
-  std::vector<std::array<std::int64_t, 3> > given(m);
-  for(std::size_t i = 0; i < m; ++i)
-    std::copy(f + 3 * i, f + 3 * i + 3, given[i].begin());
-  if(CF::Input_error error = FE::polygon_soup_error(n, given))
-    return error;
   std::vector<Triangle> triangles(m);
-  for(std::size_t i = 0; i < m; ++i)
-    for(std::size_t c = 0; c < 3; ++c)
-      triangles[i][c] = static_cast<std::size_t>(given[i][c]);
+  {
+    std::vector<std::array<std::int64_t, 3> > given(m);
+    for(std::size_t i = 0; i < m; ++i)
+      std::copy(f + 3 * i, f + 3 * i + 3, given[i].begin());
+    if(CF::Input_error error = FE::polygon_soup_error(n, given))
+      return error;
+    for(std::size_t i = 0; i < m; ++i)
+      for(std::size_t c = 0; c < 3; ++c)
+        triangles[i][c] = static_cast<std::size_t>(given[i][c]);
+  }
   std::vector<Point> points;
   points.reserve(n);
   const double* p = vertices.data();
@@ -210,12 +212,12 @@ struct Options
   // The library's settings, its defaults where the user gave nothing; with the GIL held.
   CF::Fairing_settings settings() const
   {
-    CF::Fairing_settings settings(method);
-    CF::for_each_named_setting(settings, [this](const char* name, const char*, auto, auto& field) {
+    CF::Fairing_settings asked(method);
+    CF::for_each_named_setting(asked, [this](const char* name, const char*, auto, auto& field) {
       if(given.contains(name))
         field = given[name].template cast<std::decay_t<decltype(field)> >();
     });
-    return settings;
+    return asked;
   }
 };
 
@@ -313,8 +315,9 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
                                                              Row_map<bool, 1, bool>{fixed ? fixed->data()
                                                                                           : none_fixed.get()})))));
       const auto fair_with = [&](const auto& parameters) {
-        return region ? PMP::constrained_fairing(region_faces, mesh, options.epsilon, with_settings(settings, parameters))
-                      : PMP::constrained_fairing(mesh, options.epsilon, with_settings(settings, parameters));
+        const auto all = with_settings(settings, parameters);
+        return region ? PMP::constrained_fairing(region_faces, mesh, options.epsilon, all)
+                      : PMP::constrained_fairing(mesh, options.epsilon, all);
       };
       // The box pipeline also serves the ball asked for with box arrays: the library then
       // reports BOX_WITH_BALL.
@@ -645,12 +648,12 @@ PYBIND11_MODULE(_core, m)
   m.def(
     "default_settings",
     [](PMP::Constrained_fairing_method method) {
-      CF::Fairing_settings settings(method);
+      CF::Fairing_settings defaults(method);
       py::dict d;
-      CF::for_each_named_setting(settings,
+      CF::for_each_named_setting(defaults,
                                  [&d](const char* name, const char*, auto, const auto& field) { d[name] = field; });
-      d["energy_decrease_window"] = settings.options.window;
-      d["energy_remaining_fraction"] = settings.options.remaining_fraction;
+      d["energy_decrease_window"] = defaults.options.window;
+      d["energy_remaining_fraction"] = defaults.options.remaining_fraction;
       return d;
     },
     py::arg("method"));

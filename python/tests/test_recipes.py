@@ -1,4 +1,5 @@
-"""The recipes of python/examples: with meshio, and with Open3D or, where Open3D is not\ninstalled, a stand-in for the part of its API that the recipe uses."""
+"""The recipes of python/examples: with meshio, and with Open3D or, where Open3D is not
+installed, a stand-in for the part of its API that the recipe uses."""
 
 import runpy
 import subprocess

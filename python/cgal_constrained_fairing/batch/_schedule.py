@@ -156,14 +156,13 @@ def import_distributed():
 
 
 @contextlib.contextmanager
-def _task(path: str, threads: int):
+def _task(path: str):
     """A task's row, filled by the ``with`` block, which may raise: the error goes into the row,
     with the time taken."""
     start = time.perf_counter()
     row = empty_row(path)
     row["worker"] = _worker_address()
     try:
-        set_max_threads(threads)
         yield row
     except Exception as error:
         row.update(status="error", error=_describe(error))
@@ -173,7 +172,8 @@ def _task(path: str, threads: int):
 def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dict[str, Any],
                threads: int) -> Row:
     """The task of one file, run in a worker: read, fair, write; never raises."""
-    with _task(path, threads) as row:
+    with _task(path) as row:
+        set_max_threads(threads)
         V, F = read_mesh(path)
         row.update(vertices=int(V.shape[0]), faces=int(F.shape[0]))
         epsilon = mesh_epsilon(eps, V, F)
@@ -198,7 +198,8 @@ def _fair_label_map(path: str, output: str, label_format: str, fair_options: Dic
     """The task of one label map, run in a worker: its labels' surfaces, faired together within
     their voxels, each written in world coordinates to ``output/label_<L>.<format>``; the
     folder is renamed into place once complete. Never raises."""
-    with _task(path, threads) as row:
+    with _task(path) as row:
+        set_max_threads(threads)
         labels, affine = read_label_map(path)
         result = label_surfaces(labels, affine=affine, **fair_options)
         row.update(vertices=int(result.vertices.shape[0]), faces=int(result.faces.shape[0]),

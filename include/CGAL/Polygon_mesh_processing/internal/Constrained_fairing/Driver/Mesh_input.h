@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -42,23 +43,27 @@ class Mesh_input
 public:
   // The faces of `region` move, or the whole mesh if it is null.
   Mesh_input(TriangleMesh& tmesh, const VertexPointMap& vpm, const FaceRange* region)
-    : m_tmesh(tmesh), m_vpm(vpm), m_region(region), m_user_number(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh)),
+    : m_tmesh(tmesh), m_vpm(vpm), m_region(region),
       m_vertex_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tmesh))
   {}
 
   Input_error structure_error()
   {
+    m_user_number.emplace(get(CGAL::dynamic_vertex_property_t<std::size_t>(), m_tmesh));
     std::size_t count = 0;
     for(auto v : vertices(m_tmesh))
-      put(m_user_number, v, count++);
-    return mesh_error(m_tmesh, m_user_number);
+      put(*m_user_number, v, count++);
+    return mesh_error(m_tmesh, *m_user_number);
   }
 
+  // The numbers of the vertices in messages are no longer needed once the part has them.
   template <typename VertexMaps>
-  Part part(const VertexMaps& maps) const
+  Part part(const VertexMaps& maps)
   {
     const auto is_constrained = [&maps](vertex_descriptor v) { return maps.is_constrained(v); };
-    return m_region ? Part(*m_region, m_tmesh, m_user_number, is_constrained) : Part(m_tmesh, is_constrained);
+    Part part = m_region ? Part(*m_region, m_tmesh, *m_user_number, is_constrained) : Part(m_tmesh, is_constrained);
+    m_user_number.reset();
+    return part;
   }
 
   Points input_points(const Part& part) const
@@ -136,8 +141,8 @@ private:
   TriangleMesh& m_tmesh;
   VertexPointMap m_vpm;
   const FaceRange* m_region;
-  Number_map m_user_number;  // each vertex's position in vertices(tmesh)
-  Number_map m_vertex_index; // each vertex's place in the solver's order, from the order phase on
+  std::optional<Number_map> m_user_number; // each vertex's position in vertices(tmesh), until the part
+  Number_map m_vertex_index;               // each vertex's place in the solver's order, from the order phase on
 };
 
 } // namespace Constrained_fairing

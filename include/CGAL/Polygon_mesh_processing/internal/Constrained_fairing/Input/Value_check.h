@@ -75,7 +75,8 @@ inline Input_error box_half_extents_error(const Fairing_settings& settings)
 }
 
 // The first vertex that may move with a bad tolerance, box half-extents or box centre, in that
-// order for each vertex.
+// order for each vertex: three defects in one pass, so that the first vertex with any of them is
+// the one reported.
 template <typename Part, typename VertexMaps>
 Input_error vertex_bound_error(const Part& part, const VertexMaps& maps)
 {
@@ -106,8 +107,8 @@ Input_error vertex_bound_error(const Part& part, const VertexMaps& maps)
 // The first vertex that may move whose input position X0.row(k) is outside its box: only a
 // centre of the user's can leave it there.
 template <typename Part, typename VertexMaps>
-Input_error outside_box_error(const Part& part, const Points& X0, double epsilon, const Fairing_settings& settings,
-                              const VertexMaps& maps)
+Input_error input_position_error(const Part& part, const Points& X0, double epsilon, const Fairing_settings& settings,
+                                 const VertexMaps& maps)
 {
   Input_error error;
   if constexpr(VertexMaps::has_box_center)
@@ -123,7 +124,7 @@ Input_error outside_box_error(const Part& part, const Points& X0, double epsilon
         h = maps.given_box_half_extents(v);
       const Eigen::Vector3d c = maps.given_box_center(v), half_extents = h.cwiseMin(t);
       if(t > 0 && !is_in_box(X0.row(Eigen::Index(k)).data(), c.data(), half_extents.data()))
-        error = Constrained_fairing::outside_box_error(part.number(k));
+        error = outside_box_error(part.number(k));
     });
   }
   return error;
@@ -143,7 +144,7 @@ Input_error value_error(const Part& part, const Points& X0, const Triangles& tri
       return error;
   if(Input_error error = vertex_bound_error(part, maps))
     return error;
-  if(Input_error error = outside_box_error(part, X0, epsilon, settings, maps))
+  if(Input_error error = input_position_error(part, X0, epsilon, settings, maps))
     return error;
   if(!Bending_energy::is_defined(triangles(), X0))
     return no_area_error();

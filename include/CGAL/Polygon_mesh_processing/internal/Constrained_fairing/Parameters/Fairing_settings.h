@@ -4,16 +4,14 @@
 // What a call asks besides its per-vertex maps (Vertex_maps.h), as plain values: the method, the
 // objective, the solver's options, the bound's shape, and the weights of the terms of a
 // multi-label surface. Every default lives here and only here, with why it was chosen. The
-// public functions fill these from their named parameters once (read_named_parameters.h), and
-// nothing below them sees a named parameter.
+// public functions fill these from their named parameters once (read_named_parameters.h, through
+// the table of Named_settings.h), and nothing below them sees a named parameter.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_SETTINGS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_SETTINGS_H
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
-
-#include <CGAL/Named_function_parameters.h>
 
 #include <array>
 #include <cstddef>
@@ -124,29 +122,6 @@ struct Fairing_settings
   bool has_box_parameter = false;
   std::optional<std::array<double, 3> > box_half_extents;
 };
-
-// The settings a user sets by name, each with its name in the front ends (the Python module's
-// keyword, the batch's option), its named parameter and its tag, and its field: the one table
-// from which read_fairing_settings() reads the named parameters and the Python binding its
-// options and defaults (test_defaults.py checks the binding's signature and docstrings against
-// it). The method is not in it: it chooses the others' defaults (default_options()).
-template <typename Settings, typename F>
-void for_each_named_setting(Settings& settings, const F& f)
-{
-  f("max_iterations", "number_of_iterations", internal_np::number_of_iterations, settings.options.max_iterations);
-  f("energy_decrease_threshold", "energy_decrease_threshold", energy_decrease_threshold, settings.options.threshold);
-  f("initial_smoothing_steps", "initial_smoothing_steps", initial_smoothing_steps, settings.options.smoothing_steps);
-  f("conjugate_gradient_iterations", "conjugate_gradient_iterations", conjugate_gradient_iterations,
-    settings.options.cg_iterations);
-  f("objective", "fairing_objective", fairing_objective, settings.objective);
-  f("fidelity_weight", "fidelity_weight", fidelity_weight, settings.fidelity_weight);
-  f("sliver_barrier_weight", "sliver_barrier_weight", sliver_barrier_weight, settings.sliver_barrier_weight);
-}
-
-// The tag of an undocumented named parameter that gives all the settings at once, which the
-// named parameters then override: a front end whose user sets them by name at run time (the
-// Python module) calls the public functions with it.
-enum fairing_settings_t { fairing_settings };
 
 } // namespace Constrained_fairing
 } // namespace internal

@@ -2,14 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The one place where the named parameters of the public functions are read: into the plain
-// settings (Fairing_settings.h), the per-vertex maps (Vertex_maps.h), the callback and the
-// linear solver, which is all the drivers below them see.
+// settings (Fairing_settings.h, through the table of Named_settings.h), the per-vertex maps
+// (Vertex_maps.h), the callback and the linear solver, which is all the drivers below them see.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_READ_NAMED_PARAMETERS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_READ_NAMED_PARAMETERS_H
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Named_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Vertex_maps.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
 
@@ -70,7 +71,7 @@ Fairing_settings read_fairing_settings(const NamedParameters& np)
     settings.deviation_bound = get_parameter(np, deviation_bound);
   if constexpr(is_given_parameter<NamedParameters, box_half_extents_t>)
     settings.box_half_extents = std::array<double, 3>(get_parameter(np, box_half_extents));
-  settings.has_box_parameter = is_given_parameter<NamedParameters, box_half_extents_t> ||
+  settings.has_box_parameter = settings.box_half_extents.has_value() ||
                                is_given_parameter<NamedParameters, vertex_box_half_extents_map_t> ||
                                is_given_parameter<NamedParameters, vertex_box_center_map_t>;
   return settings;
