@@ -39,10 +39,10 @@
 #include "surface_quality.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
-#include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hilbert_order.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Thin_plate_hessian.h>
+#include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 
 #include <algorithm>
 #include <cstdlib>

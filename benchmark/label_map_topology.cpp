@@ -16,6 +16,7 @@
 #include "benchmark_support.h"
 
 #include "front_end/Label_map_file.h"
+#include "front_end/Voxel_frame.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
@@ -177,11 +178,13 @@ int main(int argc, char* argv[])
       std::cout << file << ": " << error << std::endl;
       continue;
     }
-    Map map{std::filesystem::path(file).filename().string(), read.size, {}, std::move(read.labels)};
-    for(std::size_t c = 0; c < 3; ++c)
-      map.spacing[c] = std::sqrt(read.affine[0][c] * read.affine[0][c] + read.affine[1][c] * read.affine[1][c] +
-                                 read.affine[2][c] * read.affine[2][c]);
-    judge(map);
+    const Constrained_fairing_front_end::Voxel_frame frame(read.affine);
+    if(!frame.error.empty())
+    {
+      std::cout << file << ": " << frame.error << std::endl;
+      continue;
+    }
+    judge(Map{std::filesystem::path(file).filename().string(), read.size, frame.spacing, std::move(read.labels)});
   }
   return 0;
 }

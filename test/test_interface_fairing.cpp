@@ -22,10 +22,10 @@
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
-#include <CGAL/Polygon_mesh_processing/label_surface.h>
-#include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/label_surface.h>
+#include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -151,26 +151,40 @@ void check_fairing(const std::array<double, 3>& spacing)
   CHECK(again == points);
 }
 
+namespace CF = PMP::internal::Constrained_fairing;
+
+// A soup as the volume term takes it: each triangle turned to run from its smaller label into its
+// larger, the labels themselves as their numbers (the soups here have labels 0, 1, ...), and the
+// points as the solver's matrix.
+struct Oriented_soup
+{
+  std::vector<std::array<CF::Index, 3> > triangles;
+  std::vector<std::array<CF::Index, 2> > sides;
+  CF::Points X0;
+
+  explicit Oriented_soup(const Soup& soup) : X0(Eigen::Index(soup.points.size()), 3)
+  {
+    for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+    {
+      const Triangle& t = soup.triangles[f];
+      const Labels& l = soup.face_labels[f];
+      const bool flip = l[0] > l[1];
+      triangles.push_back({CF::Index(t[0]), CF::Index(flip ? t[2] : t[1]), CF::Index(flip ? t[1] : t[2])});
+      sides.push_back({CF::Index((std::min)(l[0], l[1])), CF::Index((std::max)(l[0], l[1]))});
+    }
+    for(std::size_t v = 0; v < soup.points.size(); ++v)
+      CF::point(X0, v) = Eigen::Vector3d(soup.points[v].x(), soup.points[v].y(), soup.points[v].z());
+  }
+};
+
 // The volume term on the phantom's soup, its points moved at random by up to half a voxel: its
 // gradient against central differences; with the triangles of label 3's surface on one side
 // dropped, label 3 (and the outside, which shares them) is no longer held.
 void check_label_volumes()
 {
-  namespace CF = PMP::internal::Constrained_fairing;
   const Soup soup = phantom({1, 1, 1});
-  std::vector<std::array<CF::Index, 3> > triangles;
-  std::vector<std::array<CF::Index, 2> > sides;
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
-  {
-    const Triangle& t = soup.triangles[f];
-    const Labels& l = soup.face_labels[f];
-    const bool flip = l[0] > l[1];
-    triangles.push_back({CF::Index(t[0]), CF::Index(flip ? t[2] : t[1]), CF::Index(flip ? t[1] : t[2])});
-    sides.push_back({CF::Index((std::min)(l[0], l[1])), CF::Index((std::max)(l[0], l[1]))});
-  }
-  CF::Points X0(Eigen::Index(soup.points.size()), 3);
-  for(std::size_t v = 0; v < soup.points.size(); ++v)
-    CF::point(X0, v) = Eigen::Vector3d(soup.points[v].x(), soup.points[v].y(), soup.points[v].z());
+  const Oriented_soup oriented(soup);
+  const auto& [triangles, sides, X0] = oriented;
   CF::Label_volumes volumes(triangles, sides, X0, CF::default_label_volume_weight);
   CHECK(volumes.size() == 4);
   CHECK(volumes.value(X0) == 0);
@@ -209,19 +223,8 @@ void check_label_volumes()
   Soup block;
   PMP::label_surface_nets(labels.data(), size, {1., 1., 1.}, {0, 0, 0}, block.points, block.triangles,
                           block.face_labels, block.half_extents);
-  std::vector<std::array<CF::Index, 3> > block_triangles;
-  std::vector<std::array<CF::Index, 2> > block_sides;
-  for(std::size_t f = 0; f < block.triangles.size(); ++f)
-  {
-    const Triangle& t = block.triangles[f];
-    const bool flip = block.face_labels[f][0] > block.face_labels[f][1];
-    block_triangles.push_back({CF::Index(t[0]), CF::Index(flip ? t[2] : t[1]), CF::Index(flip ? t[1] : t[2])});
-    block_sides.push_back({0, 1});
-  }
-  CF::Points B(Eigen::Index(block.points.size()), 3);
-  for(std::size_t v = 0; v < block.points.size(); ++v)
-    CF::point(B, v) = Eigen::Vector3d(block.points[v].x(), block.points[v].y(), block.points[v].z());
-  const CF::Label_volumes block_volumes(block_triangles, block_sides, B, 1);
+  const Oriented_soup oriented_block(block);
+  const CF::Label_volumes block_volumes(oriented_block.triangles, oriented_block.sides, oriented_block.X0, 1);
   CHECK(block_volumes.size() == 2);
   for(std::size_t l = 0; l < 2; ++l)
     CHECK(std::abs(block_volumes.slack(l) - std::sqrt(6.) * 36 / std::sqrt(12.)) < 1e-9);

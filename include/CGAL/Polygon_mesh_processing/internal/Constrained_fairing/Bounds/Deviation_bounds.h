@@ -15,8 +15,8 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DEVIATION_BOUNDS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DEVIATION_BOUNDS_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <algorithm>
 #include <cmath>

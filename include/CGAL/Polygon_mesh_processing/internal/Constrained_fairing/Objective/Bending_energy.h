@@ -41,9 +41,9 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <Eigen/Geometry>
 

@@ -34,9 +34,9 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Active_set.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_line_search.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>

@@ -11,9 +11,9 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_STIFFNESS_PRECONDITIONER_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_STIFFNESS_PRECONDITIONER_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <cstddef>
 #include <vector>
