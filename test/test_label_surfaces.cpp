@@ -6,7 +6,8 @@
 // the outside included), a label against the array's side, labels whose voxels touch only along
 // an edge or at a corner, in every orientation, and worst cases: checkerboards of two and three
 // labels, one-voxel tubes along every diagonal, tilted one-voxel sheets, a label that meets itself
-// around an edge, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
+// around an edge, cells of real segmentations that need a junction point or quarter boxes, random
+// voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
 //  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
 //    and no two boxes meet; the point of a cell of one point is its centre;
 //  - each triangle separates its two labels with its normal from the first into the second (a
@@ -297,6 +298,14 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
                      });
   contacts.two_sheets = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
   cases.emplace_back(contacts, true);
+  // Cells found in cortical atlases, with their neighbours (4 x 4 x 4 voxels, labels renumbered):
+  // holes of a ridge that border several interfaces, capped around a junction point; and two
+  // points whose faces lie in one octant of their cell, their boxes a quarter of it apart.
+  for(const char* cell : {"1114111414244424111411144424444411541124424444441145114534444444",
+                          "3322333233323333321133313321333332113122321233322211321222223322"})
+    cases.emplace_back(generated({4, 4, 4}, {1, 1, 1},
+                                 [cell](long i, long j, long k) { return Label(cell[16 * i + 4 * j + k] - '0'); }),
+                       true);
   std::mt19937 random(7);
   for(int labels : {2, 3, 5})
     for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})

@@ -51,13 +51,19 @@ outside the array count as `background`.
 - A dual cell whose voxels do not all have the same label gets a point at its centre, whose box
   is the cell shrunk by `margin * spacing` on every side. Where a label's voxels meet only along
   an edge or at a corner, the cell gets one point per sheet of the surface instead, each with a
-  box in the part of the cell its triangles occupy, also `margin * spacing` from the cell's
-  centre planes there, and at its centre: the voxels of the two diagonals around an edge are
-  never both joined; of two labels that alternate around an edge, the one whose voxels are joined
-  around it anyway is, else the smaller label. So every label's surface is a manifold (made by
-  `label_surface()` without splitting), and no two boxes meet: the points stay apart through any
-  fairing within their boxes. Points are numbered in the order of their cells, `(i, j, k)` with
-  `k` fastest, and within a cell by their first triangle.
+  box in the part of the cell its triangles occupy (a half or, where the triangles of two points
+  lie in one octant, a quarter of the cell along an axis), also `margin * spacing` from the
+  planes that cut the cell there, and at its centre: the voxels of the two diagonals around an
+  edge are never both joined; of two labels that alternate around an edge, the one whose voxels
+  are joined around it anyway is, else the smaller label. Where a junction would pinch a label
+  or two sheets would share an edge, a sheet gets several points on a ridge; the holes the ridge
+  leaves in the interfaces are capped by triangles of the cell's points, around one more point
+  in a free octant of the cell where they border several interfaces. So every label's surface is
+  a manifold (made by `label_surface()` without splitting), except in rare cells where two labels
+  each touch themselves at the centre with others around, and no two boxes meet: the points stay
+  apart through any fairing within their boxes. Points are numbered in the order of their cells,
+  `(i, j, k)` with `k` fastest, and within a cell by their first triangle, the cap-only points
+  last.
 
 The boxes, `box_half_extents[p]` around `points[p]`, are those that
 `constrained_fairing_of_interfaces()` takes as `vertex_box_half_extents_map`. The choice is
@@ -78,9 +84,9 @@ made from the labels alone: the same map gives the same soup whatever is done wi
 \param face_labels the two labels of each triangle, one per triangle
 \param box_half_extents the half-extents of each point's box, one per point, appended to
 \param background the label of the outside, which gets no surface of its own
-\param margin the margin of the boxes, a fraction of the spacing in `[0, 0.25)`
+\param margin the margin of the boxes, a fraction of the spacing in `[0, 0.125)`
 
-\pre `0 <= margin < 0.25`
+\pre `0 <= margin < 0.125`
 */
 template <typename Label, typename PointRange, typename TriangleRange, typename LabelPairRange, typename BoxRange>
 void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& size,
@@ -94,7 +100,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   using Cell = internal::Constrained_fairing::Dual_cell<Label>;
   using Epick = Exact_predicates_inexact_constructions_kernel;
   using Signed = std::ptrdiff_t;
-  CGAL_precondition(margin >= 0 && margin < 0.25);
+  CGAL_precondition(margin >= 0 && margin < 0.125);
   const Signed n[3] = {Signed(size[0]), Signed(size[1]), Signed(size[2])};
   const auto label = [&](Signed i, Signed j, Signed k) {
     if(i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2])
@@ -139,8 +145,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
           {
             caps.push_back({});
             for(int k = 0; k < 3; ++k)
-              caps.back()[std::size_t(k)] = first + first_point[cell] + std::size_t(cap[std::size_t(k)]);
-            cap_labels.push_back(dual.cap_labels());
+              caps.back()[std::size_t(k)] = first + first_point[cell] + std::size_t(cap.points[std::size_t(k)]);
+            cap_labels.push_back(cap.labels);
           }
         }
         for(int s = 0; s < dual.size(); ++s)

@@ -23,15 +23,18 @@
 // the pinched label, each pair of the doubled ring (split in the ring's lower cell), seeds a point,
 // every other node of the sheet takes the point of the nearest seed, and a face whose two nodes
 // have different points gets both as its corner (its quad becomes a pentagon or more): the sheet
-// becomes a ridge of points instead of a cone, and the regions no longer meet.
+// becomes a ridge of points instead of a cone, and the regions no longer meet. The holes
+// the ridge leaves are capped: by a fan of triangles of one interface where they border one, else
+// by a fan around a junction, a point of no face, for each group of holes that share segments.
 //
 // Each point's box: the cell shrunk by `margin` (a fraction of the spacing) on every side for a
 // cell of one point; with more, the half or whole of each axis that the quarters of its faces
-// (inside the cell) cover, two points whose boxes meet cut apart at a centre plane along the axis
-// where their faces lie farthest apart, and also `margin` from the centre planes where a box stops
-// there. The boxes of different points never meet, so no two points can meet. Points that cannot
-// be cut apart, or a sheet where the rule above has no answer, keep one point: its labels' surfaces
-// touch there, and label_surface() splits them.
+// (inside the cell) cover, two points whose boxes meet cut apart, along the axis where their faces
+// lie farthest apart, at the centre plane or, where both lie on one side of it, at the quarter
+// plane; a junction takes an octant that no other box meets; and each box keeps `margin` from the
+// planes that cut it. The boxes of different points never meet, so no two points can meet. Where
+// the seeds conflict or no box can be cut apart, the cell keeps one point per sheet: its labels'
+// surfaces touch there, and label_surface() splits them.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
@@ -276,7 +279,11 @@ public:
     seed_doubled_edges(label, sheet, seeds);
     seed_pinched_labels(sheet, seeds);
     place_points(sheet, seeds);
-    make_boxes(margin);
+    if(!make_boxes(margin))
+    {
+      one_point_per_sheet(sheet);
+      make_boxes(margin);
+    }
   }
 
   // The number of points.
@@ -289,8 +296,12 @@ public:
   }
   // The triangles that cap the cell's ridges, as points of the cell, with the labels on their two
   // sides: the normal of (p, q, r) points from the region of the first label into the second's.
-  const std::vector<std::array<int, 3> >& caps() const { return m_caps; }
-  const std::array<Label, 2>& cap_labels() const { return m_cap_labels; }
+  struct Cap
+  {
+    std::array<int, 3> points;
+    std::array<Label, 2> labels;
+  };
+  const std::vector<Cap>& caps() const { return m_caps; }
   // Point p's box, relative to the cell's centre in spacings along axis c.
   double low(int p, int c) const { return m_low[std::size_t(p)][std::size_t(c)]; }
   double high(int p, int c) const { return m_high[std::size_t(p)][std::size_t(c)]; }
@@ -419,12 +430,14 @@ private:
         point_of_node[std::size_t(v)] = (split ? count : 0) + sheet[std::size_t(v)];
     number_points(point_of_node);
     if(split && !close_ridges())
-    {
-      for(int v = 0; v < 12; ++v)
-        point_of_node[std::size_t(v)] = sheet[std::size_t(v)];
-      number_points(point_of_node);
-      m_caps.clear();
-    }
+      one_point_per_sheet(sheet);
+  }
+
+  void one_point_per_sheet(const std::array<int, 12>& sheet)
+  {
+    number_points(sheet);
+    m_caps.clear();
+    m_first_junction = none;
   }
 
   // Face f's corner as its polygon runs through it (Label_surface_nets.h: counterclockwise seen
@@ -501,7 +514,7 @@ private:
     if(once.empty())
       return true;
     if(!one_interface)
-      return false;
+      return cap_around_junctions();
     // The holes' loops: each segment used once, followed head to tail; the cap runs against them.
     while(!once.empty())
     {
@@ -518,9 +531,120 @@ private:
       }
       loop.pop_back();
       for(std::size_t k = 1; k + 1 < loop.size(); ++k)
-        m_caps.push_back({loop[0], loop[k], loop[k + 1]});
+        m_caps.push_back({{loop[0], loop[k], loop[k + 1]}, interface});
     }
-    m_cap_labels = interface;
+    return true;
+  }
+
+  // Where the holes border several interfaces: each label's holes are the segments its faces use
+  // once, run with the label on their left seen from outside, and each must be the reverse of one
+  // other label's. The holes of a label make loops (a point that two of them pass would pinch the
+  // label); loops that share segments make a group, and each group gets a new point, a junction,
+  // the apex of a fan of caps, one per segment, between the two labels whose holes run along it.
+  // Two loops of one label in a group would touch at its junction: no caps then.
+  bool cap_around_junctions()
+  {
+    struct Hole_segment
+    {
+      std::array<int, 2> ends;
+      Label label;
+      int loop;
+    };
+    std::vector<Hole_segment> holes;
+    std::vector<Label> loop_label;
+    for(int o = 0; o < 8; ++o)
+    {
+      const Label l = m_nodes.label(o);
+      bool first_of_label = true;
+      for(int e = 0; e < o; ++e)
+        first_of_label = first_of_label && m_nodes.label(e) != l;
+      if(!first_of_label)
+        continue;
+      std::vector<std::array<int, 2> > once;
+      for_each_side_of(l, [&](int f, int voxel) {
+        std::array<int, 2> e = corner(f);
+        if(voxel == voxel_of_face(f, 1))
+          std::swap(e[0], e[1]); // the polygon runs counterclockwise seen from the other side
+        if(e[0] == e[1])
+          return;
+        const auto reverse = std::find(once.begin(), once.end(), std::array<int, 2>{e[1], e[0]});
+        if(reverse != once.end())
+          once.erase(reverse);
+        else
+          once.push_back(e);
+      });
+      // Each point of a hole is left once and reached once, so the segments make loops.
+      std::array<int, 40> out, in;
+      out.fill(none);
+      in.fill(0);
+      for(std::size_t s = 0; s < once.size(); ++s)
+      {
+        if(out[std::size_t(once[s][0])] != none)
+          return false;
+        out[std::size_t(once[s][0])] = int(s);
+        ++in[std::size_t(once[s][1])];
+      }
+      for(int p = 0; p < 40; ++p)
+        if(in[std::size_t(p)] != (out[std::size_t(p)] != none ? 1 : 0))
+          return false;
+      std::vector<bool> used(once.size(), false);
+      for(std::size_t first = 0; first < once.size(); ++first)
+        if(!used[first])
+        {
+          const int loop = int(loop_label.size());
+          loop_label.push_back(l);
+          for(std::size_t s = first; !used[s]; s = std::size_t(out[std::size_t(once[s][1])]))
+          {
+            used[s] = true;
+            holes.push_back({once[s], l, loop});
+          }
+        }
+    }
+    // The groups of loops, joined through the segments they share.
+    std::vector<int> group(loop_label.size());
+    for(std::size_t k = 0; k < group.size(); ++k)
+      group[k] = int(k);
+    const auto root = [&group](int k) {
+      while(group[std::size_t(k)] != k)
+        k = group[std::size_t(k)];
+      return k;
+    };
+    std::vector<Label> across(holes.size());
+    for(std::size_t h = 0; h < holes.size(); ++h)
+    {
+      int count = 0;
+      for(const Hole_segment& g : holes)
+      {
+        if(g.ends == holes[h].ends && &g != &holes[h])
+          return false;
+        if(g.ends[0] == holes[h].ends[1] && g.ends[1] == holes[h].ends[0])
+        {
+          ++count;
+          across[h] = g.label;
+          group[std::size_t(root(holes[h].loop))] = root(g.loop);
+        }
+      }
+      if(count != 1)
+        return false;
+    }
+    // One junction per group, numbered after the points.
+    std::vector<int> junction(group.size(), none);
+    int junctions = 0;
+    for(std::size_t k = 0; k < group.size(); ++k)
+    {
+      int& j = junction[std::size_t(root(int(k)))];
+      if(j == none)
+        j = m_count + junctions++;
+      for(std::size_t other = 0; other < k; ++other)
+        if(loop_label[other] == loop_label[k] && root(int(other)) == root(int(k)))
+          return false;
+    }
+    for(std::size_t h = 0; h < holes.size(); ++h)
+      if(holes[h].label < across[h])
+        m_caps.push_back({{junction[std::size_t(root(holes[h].loop))], holes[h].ends[1], holes[h].ends[0]},
+                          {holes[h].label, across[h]}});
+    m_first_junction = m_count;
+    m_count += junctions;
     return true;
   }
 
@@ -545,7 +669,11 @@ private:
     }
   }
 
-  void make_boxes(double margin)
+  // A box along each axis: the quarters [first, last) of the cell it spans.
+  using Box_range = std::array<std::array<int, 2>, 3>;
+
+  // Whether the boxes are made without merging points that a cap needs apart.
+  bool make_boxes(double margin)
   {
     // Which halves (bit 0 lower, bit 1 upper) of each axis the point's faces cover, and where
     // they lie: the faces whose corner is the point alone, else all that touch it.
@@ -581,45 +709,107 @@ private:
           axis = 3;
     if(m_count == 1)
       halves[0] = {3, 3, 3};
-    // Boxes that meet are cut apart, at the axis where the two lie farthest apart.
-    for(int x = 0; x < m_count; ++x)
-      for(int y = x + 1; y < m_count; ++y)
+    std::vector<Box_range> range(halves.size());
+    for(std::size_t p = 0; p < range.size(); ++p)
+      for(std::size_t c = 0; c < 3; ++c)
+        range[p][c] = {(halves[p][c] & 1) ? 0 : 2, (halves[p][c] & 2) ? 4 : 2};
+    // Boxes that meet are cut apart, at the axis where the two lie farthest apart: at the centre
+    // plane where both reach across it, else (two points whose faces lie in one octant) in the
+    // middle of the part they share.
+    for(std::size_t x = 0; x < range.size(); ++x)
+      for(std::size_t y = x + 1; y < range.size(); ++y)
       {
-        bool meet = true;
-        for(std::size_t c = 0; c < 3; ++c)
-          meet = meet && (halves[std::size_t(x)][c] & halves[std::size_t(y)][c]) != 0;
-        if(!meet)
+        if(is_junction(int(x)) || is_junction(int(y)) || !meet(range[x], range[y]))
           continue;
-        int best = -1;
-        double apart = -1;
-        bool x_lower = true;
-        for(std::size_t c = 0; c < 3; ++c)
-        {
-          const double d = centroid[std::size_t(y)][c] - centroid[std::size_t(x)][c];
-          const int hx = halves[std::size_t(x)][c], hy = halves[std::size_t(y)][c];
-          if((hx & 1) && (hy & 2) && d >= 0 && d > apart)
-            best = int(c), apart = d, x_lower = true;
-          if((hx & 2) && (hy & 1) && -d > apart)
-            best = int(c), apart = -d, x_lower = false;
-        }
-        if(best < 0)
-        {
-          merge(x, y);
-          make_boxes(margin);
-          return;
-        }
-        halves[std::size_t(x)][std::size_t(best)] = x_lower ? 1 : 2;
-        halves[std::size_t(y)][std::size_t(best)] = x_lower ? 2 : 1;
+        if(cut_apart(range[x], range[y], centroid[x], centroid[y], true) ||
+           cut_apart(range[x], range[y], centroid[x], centroid[y], false))
+          continue;
+        // Merged, the points of a cap could coincide and leave its hole open.
+        if(!m_caps.empty())
+          return false;
+        merge(int(x), int(y));
+        return make_boxes(margin);
       }
-    m_low.assign(std::size_t(m_count), {});
-    m_high.assign(std::size_t(m_count), {});
-    for(int p = 0; p < m_count; ++p)
+    for(int j = m_first_junction; j != none && j < m_count; ++j)
+      if(!place_junction(j, range, centroid))
+        return false;
+    m_low.assign(range.size(), {});
+    m_high.assign(range.size(), {});
+    for(std::size_t p = 0; p < range.size(); ++p)
       for(std::size_t c = 0; c < 3; ++c)
       {
-        const int h = halves[std::size_t(p)][c];
-        m_low[std::size_t(p)][c] = (h & 1) ? -0.5 + margin : margin;
-        m_high[std::size_t(p)][c] = (h & 2) ? 0.5 - margin : -margin;
+        m_low[p][c] = 0.25 * range[p][c][0] - 0.5 + margin;
+        m_high[p][c] = 0.25 * range[p][c][1] - 0.5 - margin;
       }
+    return true;
+  }
+
+  static bool meet(const Box_range& x, const Box_range& y)
+  {
+    for(std::size_t c = 0; c < 3; ++c)
+      if((std::max)(x[c][0], y[c][0]) >= (std::min)(x[c][1], y[c][1]))
+        return false;
+    return true;
+  }
+
+  // Cuts boxes x and y apart along the axis where their faces lie farthest apart, at the centre
+  // plane or in the middle of their common part; false where no axis can part them so.
+  static bool cut_apart(Box_range& x, Box_range& y, const std::array<double, 3>& x_centroid,
+                        const std::array<double, 3>& y_centroid, bool at_centre)
+  {
+    int best = -1, plane = 2;
+    double apart = -1;
+    bool x_lower = true;
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const int t = at_centre ? 2 : ((std::max)(x[c][0], y[c][0]) + (std::min)(x[c][1], y[c][1])) / 2;
+      const double d = y_centroid[c] - x_centroid[c];
+      if(x[c][0] < t && t < y[c][1] && d >= 0 && d > apart)
+        best = int(c), apart = d, x_lower = true, plane = t;
+      if(y[c][0] < t && t < x[c][1] && -d > apart)
+        best = int(c), apart = -d, x_lower = false, plane = t;
+    }
+    if(best < 0)
+      return false;
+    std::array<int, 2>& lower = x_lower ? x[std::size_t(best)] : y[std::size_t(best)];
+    std::array<int, 2>& upper = x_lower ? y[std::size_t(best)] : x[std::size_t(best)];
+    lower[1] = (std::min)(lower[1], plane);
+    upper[0] = (std::max)(upper[0], plane);
+    return true;
+  }
+
+  bool is_junction(int p) const { return m_first_junction != none && p >= m_first_junction; }
+
+  // Junction j, which has no faces of its own, takes the octant of the cell that no other box
+  // meets (of the junctions, those placed before it), the one on the side of the points of its
+  // caps; false where every octant is taken.
+  bool place_junction(int j, std::vector<Box_range>& range, const std::vector<std::array<double, 3> >& centroid) const
+  {
+    std::array<double, 3> around{0, 0, 0};
+    for(const Cap& cap : m_caps)
+      if(cap.points[0] == j)
+        for(std::size_t k = 1; k < 3; ++k)
+          for(std::size_t c = 0; c < 3; ++c)
+            around[c] += centroid[std::size_t(cap.points[k])][c];
+    bool found = false;
+    double best_side = 0;
+    for(int octant = 0; octant < 8; ++octant)
+    {
+      Box_range box;
+      double side = 0;
+      for(std::size_t c = 0; c < 3; ++c)
+      {
+        const bool upper = (octant >> c) & 1;
+        box[c] = {upper ? 2 : 0, upper ? 4 : 2};
+        side += upper ? around[c] : -around[c];
+      }
+      bool free = true;
+      for(int p = 0; p < m_count && free; ++p)
+        free = p >= j && is_junction(p) ? true : !meet(box, range[std::size_t(p)]);
+      if(free && (!found || side > best_side))
+        range[std::size_t(j)] = box, best_side = side, found = true;
+    }
+    return found;
   }
 
   // Point y becomes point x; the points after y are renumbered.
@@ -633,12 +823,6 @@ private:
     };
     for(int& p : m_point)
       renumber(p);
-    for(auto& cap : m_caps)
-      for(int& p : cap)
-        renumber(p);
-    m_caps.erase(std::remove_if(m_caps.begin(), m_caps.end(),
-                                [](const std::array<int, 3>& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }),
-                 m_caps.end());
     --m_count;
   }
 
@@ -646,8 +830,8 @@ private:
   int m_count = 0;
   std::array<int, 36> m_point;
   std::vector<std::array<double, 3> > m_low, m_high;
-  std::vector<std::array<int, 3> > m_caps;
-  std::array<Label, 2> m_cap_labels{};
+  std::vector<Cap> m_caps;
+  int m_first_junction = none; // the points from here on are apexes of caps, no corners of faces
 };
 
 } // namespace Constrained_fairing
