@@ -347,14 +347,8 @@ private:
   // of its faces there.
   void seed_pinched_labels(const std::array<int, 12>& sheet, Dual_cell_seeds& seeds) const
   {
-    for(int o = 0; o < 8; ++o)
+    for(const Label pinched : block_labels())
     {
-      const Label pinched = m_nodes.label(o);
-      bool first_of_label = true;
-      for(int e = 0; e < o; ++e)
-        first_of_label = first_of_label && m_nodes.label(e) != pinched;
-      if(!first_of_label)
-        continue;
       // The id of each (sheet, region) of the label, where a sheet holds two regions or more.
       std::array<std::array<int, 8>, 12> id_of;
       for(auto& ids : id_of)
@@ -385,6 +379,16 @@ private:
           seeds.plant(first_node(f), id), seeds.plant(second_node(f), id);
       });
     }
+  }
+
+  // The labels of the block, each once.
+  std::vector<Label> block_labels() const
+  {
+    std::vector<Label> labels;
+    for(int o = 0; o < 8; ++o)
+      if(std::find(labels.begin(), labels.end(), m_nodes.label(o)) == labels.end())
+        labels.push_back(m_nodes.label(o));
+    return labels;
   }
 
   // f(face, voxel) for each face with a voxel of label l on one of its sides.
@@ -552,14 +556,8 @@ private:
     };
     std::vector<Hole_segment> holes;
     std::vector<Label> loop_label;
-    for(int o = 0; o < 8; ++o)
+    for(const Label l : block_labels())
     {
-      const Label l = m_nodes.label(o);
-      bool first_of_label = true;
-      for(int e = 0; e < o; ++e)
-        first_of_label = first_of_label && m_nodes.label(e) != l;
-      if(!first_of_label)
-        continue;
       std::vector<std::array<int, 2> > once;
       for_each_side_of(l, [&](int f, int voxel) {
         std::array<int, 2> e = corner(f);
