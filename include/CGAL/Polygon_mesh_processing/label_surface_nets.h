@@ -118,8 +118,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
   std::vector<std::uint32_t> first_point(cells[0] * cells[1] * cells[2], none);
   std::vector<std::pair<std::size_t, std::array<std::int8_t, 24> > > split;
-  std::vector<std::array<std::size_t, 3> > caps;
-  std::vector<std::array<Label, 2> > cap_labels;
+  std::vector<std::pair<std::array<std::size_t, 3>, std::array<Label, 2> > > caps; // points, labels
   const std::size_t first = points.size(), first_triangle = triangles.size(), first_box = box_half_extents.size();
   std::size_t cell = 0;
   Signed c[3];
@@ -143,10 +142,9 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
               split.back().second[std::size_t(2 * f + side)] = std::int8_t(dual.point(f, (f / 4 + 1 + side) % 3));
           for(const auto& cap : dual.caps())
           {
-            caps.push_back({});
-            for(int k = 0; k < 3; ++k)
-              caps.back()[std::size_t(k)] = first + first_point[cell] + std::size_t(cap.points[std::size_t(k)]);
-            cap_labels.push_back(cap.labels);
+            caps.push_back({{}, cap.labels});
+            for(std::size_t k = 0; k < 3; ++k)
+              caps.back().first[k] = first + first_point[cell] + std::size_t(cap.points[k]);
           }
         }
         for(int s = 0; s < dual.size(); ++s)
@@ -252,10 +250,10 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
           }
         }
   }
-  for(std::size_t t = 0; t < caps.size(); ++t)
+  for(const auto& cap : caps)
   {
-    triangles.push_back({Point_index(caps[t][0]), Point_index(caps[t][1]), Point_index(caps[t][2])});
-    face_labels.push_back(cap_labels[t]);
+    triangles.push_back({Point_index(cap.first[0]), Point_index(cap.first[1]), Point_index(cap.first[2])});
+    face_labels.push_back(cap.second);
   }
 
   // Points of split cells can line up (a staircase of cells split alike): the middle point of a

@@ -39,6 +39,8 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 
+#include <boost/container/static_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -381,10 +383,10 @@ private:
     }
   }
 
-  // The labels of the block, each once.
-  std::vector<Label> block_labels() const
+  // The labels of the block, each once (no allocation: every cell of the map asks).
+  boost::container::static_vector<Label, 8> block_labels() const
   {
-    std::vector<Label> labels;
+    boost::container::static_vector<Label, 8> labels;
     for(int o = 0; o < 8; ++o)
       if(std::find(labels.begin(), labels.end(), m_nodes.label(o)) == labels.end())
         labels.push_back(m_nodes.label(o));
@@ -803,7 +805,7 @@ private:
       }
       bool free = true;
       for(int p = 0; p < m_count && free; ++p)
-        free = p >= j && is_junction(p) ? true : !meet(box, range[std::size_t(p)]);
+        free = (p >= j && is_junction(p)) || !meet(box, range[std::size_t(p)]);
       if(free && (!found || side > best_side))
         range[std::size_t(j)] = box, best_side = side, found = true;
     }
