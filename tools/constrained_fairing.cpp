@@ -90,6 +90,9 @@ options:
   --fixed-border           vertices on the mesh's border do not move
   --accurate               the accurate objective: closer to the true surface of a noisy scan,
                            a little less fair; not for surfaces extracted from volumes
+  --tangential-motion      let the vertices also slide along the surface, as they do with
+                           --box: a lower bending energy, but farther from the true surface;
+                           by default each moves along the normal of the smoothed start only
   --label-format EXT       a label map's surfaces as ply (default), off, obj or stl
   --in-place               let OUT be IN: the result replaces the input once complete
   --help                   this text
@@ -158,7 +161,7 @@ bool parse_extents(const std::string& text, std::array<double, 3>& h)
 struct Options
 {
   std::vector<std::string> positional;
-  bool box = false, fixed_border = false, accurate = false, in_place = false, help = false;
+  bool box = false, fixed_border = false, accurate = false, tangential_motion = false, in_place = false, help = false;
   std::optional<std::string> eps;
   std::string extents, radius_property, error;
   std::optional<std::string> label_format;
@@ -184,6 +187,8 @@ Options parse_options(int argc, char* argv[])
       o.fixed_border = true;
     else if(a == "--accurate")
       o.accurate = true;
+    else if(a == "--tangential-motion")
+      o.tangential_motion = true;
     else if(a == "--in-place")
       o.in_place = true;
     else if(a == "--eps")
@@ -316,7 +321,7 @@ int fair_label_map(const Options& options, const std::string& in)
 {
   namespace FE = Constrained_fairing_front_end;
   if(options.eps || options.box || !options.extents.empty() || !options.radius_property.empty() ||
-     options.fixed_border || options.in_place)
+     options.fixed_border || options.in_place || options.tangential_motion)
     return fail("of the options, only --accurate and --label-format apply to a label map");
   const std::string format = options.label_format.value_or("ply");
   if(format != "ply" && format != "off" && format != "obj" && format != "stl")
@@ -490,13 +495,16 @@ int main(int argc, char* argv[])
   auto deviation = mesh.add_property_map<vertex_descriptor, double>("v:deviation", 0.).first;
   auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
   Progress progress;
+  const bool box = options.box || !options.extents.empty();
   const PMP::Constrained_fairing_result result = fair_with_tolerance(
     mesh, epsilon, asked,
     CFP::iteration_callback(
       std::ref(progress),
-      CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
-                                              : PMP::Constrained_fairing_objective::FAIREST,
-                             CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound)))));
+      CFP::tangential_motion(
+        options.tangential_motion || box,
+        CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
+                                                : PMP::Constrained_fairing_objective::FAIREST,
+                               CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound))))));
   progress.done();
   if(!result)
     return fail(result.message + "; nothing written");
@@ -526,12 +534,12 @@ int main(int argc, char* argv[])
 
   // The report, one line. The bending energy is the paper's measure of fairness; the objective
   // minimized adds the barrier against slivers and, for --accurate, the fidelity term.
-  const bool box = options.box || !options.extents.empty();
   std::cout << in << " -> " << out << (ply ? " (with deviation and at_bound)" : "") << ": " << num_vertices(mesh)
             << " vertices; eps " << epsilon << " (" << eps_text << "), "
             << (box ? "box" + (options.extents.empty() ? std::string() : " " + options.extents) : std::string("ball"))
             << (options.radius_property.empty() ? "" : ", tolerance from " + options.radius_property)
-            << (options.fixed_border ? ", border fixed" : "") << (options.accurate ? ", accurate" : "") << "; "
+            << (options.fixed_border ? ", border fixed" : "") << (options.accurate ? ", accurate" : "")
+            << (options.tangential_motion ? ", tangential motion" : "") << "; "
             << result.number_of_iterations << " iterations ("
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
             << "); bending energy " << result.initial_bending_energy << " -> " << result.final_bending_energy;

@@ -124,6 +124,13 @@ def number_argument(value, name, defect=Defect.INVALID_ARGUMENT):
         raise InputError(defect, f"{name} must be a number (got {value!r})") from None
 
 
+def flag_argument(value, name):
+    """``True`` or ``False`` (Python's or numpy's)."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise invalid(f"{name} must be True or False (got {value!r})")
+
+
 def choice_argument(value, name, choices):
     """One of the strings `choices`, in any case."""
     if isinstance(value, str) and value.lower() in choices:

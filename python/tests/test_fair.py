@@ -218,6 +218,13 @@ def test_the_options_reach_the_library(sphere):
     Ws, _ = cf.fair(V, F, 0.05, initial_smoothing_steps=0, max_iterations=3)
     Wd, _ = cf.fair(V, F, 0.05, max_iterations=3)
     assert not np.array_equal(Ws, Wd)
+    # Sliding vertices reach a lower bending energy than the normal offsets of the default.
+    _, sliding = cf.fair(V, F, 0.05, tangential_motion=True)
+    _, along_normals = cf.fair(V, F, 0.05, tangential_motion=np.bool_(False))
+    assert sliding.final_bending_energy < along_normals.final_bending_energy
+    assert along_normals.final_bending_energy == fairest.final_bending_energy
+    with pytest.raises(ValueError, match="tangential_motion must be True or False"):
+        cf.fair(V, F, 0.05, tangential_motion=1)
 
 
 def test_the_report_has_every_field_of_the_cpp_result(sphere):
@@ -530,7 +537,8 @@ def cpp_program(variable):
 
 
 @pytest.mark.parametrize("name,options", [("head.off", []), ("elephant_noisy.off", ["--accurate"]),
-                                          ("elephant_noisy.off", ["--box"])])
+                                          ("elephant_noisy.off", ["--box"]),
+                                          ("head.off", ["--tangential-motion"])])
 def test_identical_to_the_command_line_tool(tmp_path, name, options):
     tool = cpp_program("CONSTRAINED_FAIRING_TOOL")
     out = tmp_path / "faired.off"
@@ -539,7 +547,8 @@ def test_identical_to_the_command_line_tool(tmp_path, name, options):
     V, F = cf.read_mesh(DATA / name)
     W, _ = cf.fair(V, F, 0.25 * cf.mean_edge_length(V, F),
                    objective="accurate" if "--accurate" in options else "fairest",
-                   bound="box" if "--box" in options else None)
+                   bound="box" if "--box" in options else None,
+                   tangential_motion=True if "--tangential-motion" in options else None)
     W_tool, F_tool = cf.read_mesh(out)
     assert np.array_equal(F_tool, F)
     assert np.array_equal(W_tool, W)

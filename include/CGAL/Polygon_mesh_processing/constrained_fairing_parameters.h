@@ -74,6 +74,7 @@ enum vertex_at_bound_map_t { vertex_at_bound_map };
 enum fairing_objective_t { fairing_objective };
 enum fidelity_weight_t { fidelity_weight };
 enum sliver_barrier_weight_t { sliver_barrier_weight };
+enum tangential_motion_t { tangential_motion };
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -134,6 +135,8 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fairing_objective)
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fidelity_weight)
 /// the weight of the barrier against slivers, a `double`
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(sliver_barrier_weight)
+/// whether the vertices may also slide along the surface, a `bool`
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(tangential_motion)
 #undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
 
 } // namespace constrained_fairing_parameters

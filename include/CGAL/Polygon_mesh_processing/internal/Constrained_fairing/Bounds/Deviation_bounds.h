@@ -160,9 +160,21 @@ public:
   Ball_bound(const Points& X0, double eps) : Ball_bound(X0, Bound_sizes(eps)) {}
   Ball_bound(const Points& X0, Bound_sizes radius) : Deviation_bound_base<Ball_bound>(X0, std::move(radius)) {}
 
-  bool contains(const Points& X, std::size_t i) const
+  bool contains(const Points& X, std::size_t i) const { return contains_point(X.data() + 3 * i, i); }
+
+  // Whether the point q lies in vertex i's set.
+  bool contains_point(const double* q, std::size_t i) const { return is_in_ball(q, m_X0.data() + 3 * i, m_size[i]); }
+
+  // How far the ray q + t n (t >= 0, n a unit vector, q in the set) stays in vertex i's set, up
+  // to rounding (Normal_offsets.h checks the end).
+  double ray_length(std::size_t i, const Eigen::Vector3d& q, const Eigen::Vector3d& n) const
   {
-    return is_in_ball(X.data() + 3 * i, m_X0.data() + 3 * i, m_size[i]);
+    const Eigen::Vector3d d = q - point(m_X0, i);
+    const double b = d.dot(n), c = d.squaredNorm() - m_size[i] * m_size[i];
+    const double root = std::sqrt((std::max)(b * b - c, 0.));
+    // t^2 + 2 b t + c = 0, the larger root, without cancellation
+    const double t = b > 0 ? -c / (b + root) : root - b;
+    return (std::max)(t, 0.);
   }
 
   using Deviation_bound_base<Ball_bound>::project;
@@ -245,12 +257,29 @@ public:
     m_size = Bound_sizes(std::move(largest));
   }
 
-  bool contains(const Points& X, std::size_t i) const
+  bool contains(const Points& X, std::size_t i) const { return contains_point(X.data() + 3 * i, i); }
+
+  // Whether the point q lies in vertex i's set.
+  bool contains_point(const double* q, std::size_t i) const
   {
-    for(std::size_t k = 3 * i; k < 3 * i + 3; ++k)
-      if(!(m_lower.data()[k] <= X.data()[k] && X.data()[k] <= m_upper.data()[k]))
+    for(std::size_t c = 0; c < 3; ++c)
+      if(!(m_lower.data()[3 * i + c] <= q[c] && q[c] <= m_upper.data()[3 * i + c]))
         return false;
     return true;
+  }
+
+  // How far the ray q + t n (t >= 0, n a unit vector, q in the set) stays in vertex i's set, up
+  // to rounding (Normal_offsets.h checks the end).
+  double ray_length(std::size_t i, const Eigen::Vector3d& q, const Eigen::Vector3d& n) const
+  {
+    double t = std::numeric_limits<double>::infinity();
+    for(std::size_t c = 0; c < 3; ++c)
+      if(n[Eigen::Index(c)] != 0)
+      {
+        const double side = n[Eigen::Index(c)] > 0 ? m_upper.data()[3 * i + c] : m_lower.data()[3 * i + c];
+        t = (std::min)(t, (side - q[Eigen::Index(c)]) / n[Eigen::Index(c)]);
+      }
+    return (std::max)(t, 0.);
   }
 
   using Deviation_bound_base<Box_bound>::project;

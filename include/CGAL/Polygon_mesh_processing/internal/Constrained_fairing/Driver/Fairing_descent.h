@@ -13,8 +13,11 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Normal_offsets.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
@@ -26,6 +29,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
 
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -37,10 +41,12 @@ template <typename Bound, typename SparseLinearSolver>
 class Fairing_descent
 {
 public:
-  // `moving[i]`: whether vertex i may move (fold repair re-seeds only those).
+  // `moving[i]`: whether vertex i may move (fold repair re-seeds only those); `sliding[i]`:
+  // whether it has no surface normal, and moves freely in its set even where the others move
+  // along the normals.
   Fairing_descent(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving,
-                  const Fairing_settings& settings, const SparseLinearSolver& solver)
-    : m_mesh(mesh), m_bound(bound), m_moving(moving), m_settings(settings), m_solver(solver)
+                  const std::vector<bool>& sliding, const Fairing_settings& settings, const SparseLinearSolver& solver)
+    : m_mesh(mesh), m_bound(bound), m_moving(moving), m_sliding(sliding), m_settings(settings), m_solver(solver)
   {}
 
   // From the input points X0 to X, minimizing `energy`, whose fidelity term (the accurate
@@ -76,22 +82,38 @@ private:
       X = X0;
   }
 
+  // By the method the settings name, over the bound's sets, or over the segments of the
+  // normals of X (the smoothed start) inside them (Normal_offsets.h).
   void solve(Fairing_objective& energy, const Iteration_callback& callback, Points& X,
              Constrained_fairing_result& result) const
   {
-    std::optional<Projected_lbfgs<Bound> > quasi_newton;
-    std::optional<Active_set_newton<Bound, SparseLinearSolver> > active_set;
-    if(m_settings.method == Constrained_fairing_method::QUASI_NEWTON)
-      quasi_newton.emplace(m_bound, energy);
+    if(m_settings.slides(std::is_same<Bound, Box_bound>::value))
+      solve_over(m_bound, energy, callback, X, result);
     else
-      active_set.emplace(m_mesh, m_bound, energy, m_solver);
+    {
+      const Normal_offset_bound<Bound> segments(m_bound, X, normal_directions(X));
+      Normal_offset_objective<Fairing_objective, Bound> offsets(energy, segments);
+      solve_over(segments, offsets, callback, X, result);
+    }
+  }
+
+  template <typename Feasible_set, typename Objective>
+  void solve_over(const Feasible_set& bound, Objective& energy, const Iteration_callback& callback, Points& X,
+                  Constrained_fairing_result& result) const
+  {
+    std::optional<Projected_lbfgs<Feasible_set, Objective> > quasi_newton;
+    std::optional<Active_set_newton<Feasible_set, SparseLinearSolver, Objective> > active_set;
+    if(m_settings.method == Constrained_fairing_method::QUASI_NEWTON)
+      quasi_newton.emplace(bound, energy);
+    else
+      active_set.emplace(m_mesh, bound, energy, m_solver);
     const auto descend = [&](const Solver_options& options, const Iteration_callback& heard, Points& Y) {
       return quasi_newton ? quasi_newton->run(Y, options, heard) : active_set->run(Y, options, heard);
     };
     Solver_report path = descend(m_settings.options, callback, X);
     if(path.status != Constrained_fairing_status::LINEAR_SOLVER_FAILED)
     {
-      const Fold_count folds = repair_folds(m_mesh, m_bound, m_moving, descend, m_settings.options, callback, X, path);
+      const Fold_count folds = repair_folds(m_mesh, bound, m_moving, descend, m_settings.options, callback, X, path);
       result.number_of_folded_faces = folds.after;
       result.number_of_unfolded_faces = folds.before > folds.after ? folds.before - folds.after : 0;
       result.final_energy = path.final_energy;
@@ -103,9 +125,25 @@ private:
     result.number_of_energy_evaluations = path.energy_evaluations;
   }
 
+  // Each vertex's unit normal at X; none (it moves freely) where the input has no surface
+  // normal (a label map's junction lines), where the normal vanishes, and at the triangles
+  // folded at X, which no motion along the normals would unfold.
+  Points normal_directions(const Points& X) const
+  {
+    Points N = vertex_normals(m_mesh, X);
+    for(Index f : folded_triangles(m_mesh, X))
+      for(Index v : m_mesh.triangles[f])
+        point(N, v).setZero();
+    for(std::size_t i = 0; i < m_sliding.size(); ++i)
+      if(m_sliding[i])
+        point(N, i).setZero();
+    return N;
+  }
+
   const Hinge_mesh& m_mesh;
   const Bound& m_bound;
   const std::vector<bool>& m_moving;
+  const std::vector<bool>& m_sliding;
   const Fairing_settings& m_settings;
   const SparseLinearSolver& m_solver;
 };

@@ -17,7 +17,8 @@
 //    (size(), number(k), is_fixed(k), for_each_vertex(f) with f(k, key));
 //  - input_points(part), and triangles(part), on the part's numbering, for the area check;
 //  - order(part, rank): its own numbering moved to the solver's order;
-//  - hinges(part, moving), sliver_threshold(settings), add_terms(objective, X0, settings);
+//  - hinges(part, moving), sliding_points(part) (those with no surface normal),
+//    sliver_threshold(settings), add_terms(objective, X0, settings);
 //  - repair(bound, moving, X0, X, objective, result) after the descent;
 //  - clear_outputs(maps) before the part's values are written, and write(key, x, y, z).
 
@@ -127,7 +128,8 @@ Constrained_fairing_result run_fairing_driver(Input& input, double epsilon, cons
 
     // descend
     Points X;
-    Fairing_descent<std::decay_t<decltype(bound)>, SparseLinearSolver>(mesh, bound, moving, settings, solver)
+    const std::vector<bool> sliding = input.sliding_points(part);
+    Fairing_descent<std::decay_t<decltype(bound)>, SparseLinearSolver>(mesh, bound, moving, sliding, settings, solver)
       .run(X0, energy, anchor, callback, X, result);
     if(!result)
       return;

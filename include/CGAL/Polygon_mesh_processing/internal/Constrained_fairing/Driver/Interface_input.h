@@ -122,6 +122,17 @@ public:
     return Hinge_mesh(part.size(), m_oriented, hinge_faces);
   }
 
+  // The points of the junction lines, which have no surface normal: they slide freely in their
+  // boxes where the others move along the normals (Normal_offsets.h).
+  std::vector<bool> sliding_points(const Interface_part& part) const
+  {
+    std::vector<bool> sliding(part.size(), false);
+    for(const auto& line : m_junctions->inner)
+      for(Index v : line)
+        sliding[v] = true;
+    return sliding;
+  }
+
   double sliver_threshold(const Fairing_settings& settings) const
   {
     return Sliver_barrier::threshold_of_angle(settings.interface_sliver_angle);

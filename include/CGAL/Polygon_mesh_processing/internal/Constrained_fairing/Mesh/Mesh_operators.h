@@ -73,6 +73,28 @@ private:
   Points m_sum;
 };
 
+// Each vertex's unit normal at the points X: the sum of its triangles' area normals,
+// normalized; zero where that sum vanishes.
+inline Points vertex_normals(const Hinge_mesh& mesh, const Points& X)
+{
+  Points N = Points::Zero(X.rows(), 3);
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const Eigen::Vector3d n = area_normal(mesh, X, f);
+    for(Index v : mesh.triangles[f])
+      point(N, v) += n;
+  }
+  for(std::size_t i = 0; i < static_cast<std::size_t>(N.rows()); ++i)
+  {
+    const double length = point(N, i).norm();
+    if(length > 0)
+      point(N, i) /= length;
+    else
+      point(N, i).setZero();
+  }
+  return N;
+}
+
 // The doubled area, relative to the longest squared edge, at or under which a triangle is
 // degenerate (an angle of about a micro radian): its normal is then meaningless, and turns
 // wildly under tiny moves (Bending_energy.h).

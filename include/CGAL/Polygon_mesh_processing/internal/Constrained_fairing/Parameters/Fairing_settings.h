@@ -96,6 +96,17 @@ struct Fairing_settings
   // The accurate objective: a fidelity term of weight `fidelity_weight` (> 0) is added.
   bool is_accurate() const { return objective == Constrained_fairing_objective::ACCURATE && fidelity_weight > 0; }
 
+  // Whether the vertices slide along the surface, or move along the normals of the smoothed
+  // start (Normal_offsets.h). Unless the user said, they move along the normals only with the
+  // quasi-Newton method and the ball: a ball of noise leaves the surface accurate along its
+  // normals, and there the sliding only lowers the energy at the expense of the distance to the
+  // true surface, while the vertices of voxel terraces, in boxes, must slide to reach it
+  // (doc/design_notes.md, "Normal offsets"); the paper's methods are the paper's.
+  bool slides(bool box) const
+  {
+    return tangential_motion ? *tangential_motion : method != Constrained_fairing_method::QUASI_NEWTON || box;
+  }
+
   // A box bound: asked for, or implied by a box parameter (a uniform half-extents or a map).
   bool is_box() const { return deviation_bound == Deviation_bound::BOX || has_box_parameter; }
 
@@ -116,6 +127,9 @@ struct Fairing_settings
   double interface_sliver_angle = default_interface_sliver_angle;
   double junction_weight = default_junction_weight;
   double label_volume_weight = default_label_volume_weight;
+  // Whether the vertices may also slide along the surface, as the user set it; unset, they do
+  // (see slides()).
+  std::optional<bool> tangential_motion;
   // The shape the user named, if any; whether a box parameter is given; the uniform box
   // half-extents, if given.
   std::optional<Deviation_bound> deviation_bound;
