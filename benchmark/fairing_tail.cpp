@@ -6,7 +6,8 @@
 //   fairing_tail [MESH] [--level L] [--from A] [--to B]
 //
 // MESH (default: the bundled bunny) is Loop subdivided L times (default 1) and given seeded
-// noise of 0.25 h, epsilon = 0.25 h, as in fairing_scaling. The default method runs A
+// noise of 0.25 h, epsilon = 0.25 h, as in fairing_scaling. The default method, its vertices
+// free to slide (tangential_motion(true), the default before the normal offsets), runs A
 // (default 50) and B (default 300) iterations with no stopping rule, from the same start, so
 // that the first A iterations of both runs are the same. Reports the energies, and how the
 // vertices moved from iteration A to B: the RMS and the percentiles of the motion along the
@@ -47,8 +48,9 @@ int main(int argc, char* argv[])
 
   Mesh A = noisy, B = noisy;
   const auto run = [&](Mesh& m, unsigned int iterations) {
-    return PMP::constrained_fairing(m, 0.25 * h,
-                                    CFP::energy_decrease_threshold(0.0, CGAL::parameters::number_of_iterations(iterations)));
+    return PMP::constrained_fairing(
+      m, 0.25 * h,
+      CFP::tangential_motion(true, CFP::energy_decrease_threshold(0.0, CGAL::parameters::number_of_iterations(iterations))));
   };
   const auto ra = run(A, from);
   const auto rb = run(B, to);

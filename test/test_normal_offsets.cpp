@@ -3,8 +3,8 @@
 //
 // Normal offsets (Bounds/Normal_offsets.h): each segment's ends are inside the bound by the
 // user's check and as far as the line goes in it; projection lands on the line and inside the
-// bound, and is the nearest point of the segment; restriction keeps the line and stops at a
-// blocking end; a vertex with no direction is the bound's own. On a separable quadratic, whose
+// bound, and is the nearest point of the segment; an end binds only where the gradient pushes
+// past it, and then stops the vertex; the restriction keeps the line; a vertex with no direction is the bound's own. On a separable quadratic, whose
 // minimizer over each segment is known, the quasi-Newton method finds it; on a plane patch with
 // noise across it, the default call recovers the plane. The default is the one documented: along
 // the normals with the ball, sliding with the box.
@@ -91,18 +91,27 @@ void check_segments(double scale, double size)
       CF::point(beyond, i) = s + (t + sign * 1e-6 * size) * d;
       not_furthest += bound.contains(beyond, i);
       off_line += (CF::point(X, i) - s - t * d).norm() > 1e-12 * (scale + size);
-      // at the end, pushed outwards: the restriction stops it; pushed inwards: it moves along d
-      typename CF::Normal_offset_bound<Bound>::Face face;
+      // at the end, pushed outwards: it binds, and the restriction stops it; pushed inwards: it
+      // does not bind
+      using Segments = CF::Normal_offset_bound<Bound>;
+      typename Segments::Face face;
       const bool on_segment = segments.is_on_boundary(X, i, face);
-      CHECK(on_segment);
-      typename CF::Normal_offset_bound<Bound>::Face blocked = face, inwards = face;
-      CF::Normal_offset_bound<Bound>::keep_blocked(blocked, -sign * d);
-      CF::Normal_offset_bound<Bound>::keep_blocked(inwards, sign * d);
+      CHECK(on_segment && face.end == int(sign));
+      typename Segments::Face blocked = face, inwards = face;
+      wrong_restriction += !Segments::keep_blocked(blocked, -sign * d) || Segments::keep_blocked(inwards, sign * d);
       Eigen::Vector3d v(0.3, -0.2, 0.9);
-      CF::Normal_offset_bound<Bound>::restrict(blocked, Eigen::Map<Eigen::Vector3d>(v.data()));
+      Segments::restrict(blocked, Eigen::Map<Eigen::Vector3d>(v.data()));
       wrong_restriction += !v.isZero();
-      v = Eigen::Vector3d(0.3, -0.2, 0.9);
-      CF::Normal_offset_bound<Bound>::restrict(inwards, Eigen::Map<Eigen::Vector3d>(v.data()));
+    }
+    {
+      // inside the segment: on its line, which the restriction keeps
+      using Segments = CF::Normal_offset_bound<Bound>;
+      CF::point(X, i) = s + 0.01 * size * d;
+      typename Segments::Face face;
+      const bool on_segment = segments.is_on_boundary(X, i, face);
+      CHECK(on_segment && face.end == 0);
+      Eigen::Vector3d v(0.3, -0.2, 0.9);
+      Segments::restrict(face, Eigen::Map<Eigen::Vector3d>(v.data()));
       wrong_restriction += (v - d.dot(Eigen::Vector3d(0.3, -0.2, 0.9)) * d).norm() > 1e-12;
     }
     // a point off the line, within the segment's reach: its nearest point on the line

@@ -43,12 +43,14 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
 
 \brief fairs a triangle mesh while keeping every vertex within `epsilon` of its input position.
 
-Minimizes the discrete bending energy of Wardetzky et al. over all vertex positions `p` with
+Minimizes the discrete bending energy of Wardetzky et al. over vertex positions `p` with
 `|p - p0| <= epsilon` (`p0` the input position), the problem of K. Hildebrandt and
-K. Polthier, "Constraint-based fairing of surface meshes", SGP 2007. The default method is a
-projected quasi-Newton (L-BFGS) method that reaches the lowest energy of 500 iterations of the
-paper's active set Newton method and its explicit projected gradient method 57 to 145 times
-sooner in our measurements (see the user manual); they remain available through `fairing_method`.
+K. Polthier, "Constraint-based fairing of surface meshes", SGP 2007; by default over the
+positions along the normals of a smoothed start only (see "Normal offsets" below). The default
+method is a projected quasi-Newton (L-BFGS) method that, on the paper's problem
+(`tangential_motion(true)`), reaches the lowest energy of 500 iterations of the paper's active
+set Newton method and its explicit projected gradient method 57 to 145 times sooner in our
+measurements (see the user manual); they remain available through `fairing_method`.
 Noise and terracing go; nothing moves farther than `epsilon`, so setting `epsilon` to the
 accuracy of the data (a scanner's precision, the voxel size of an isosurface) keeps that
 accuracy. More iterations can only lower the energy. The connectivity is not changed; border

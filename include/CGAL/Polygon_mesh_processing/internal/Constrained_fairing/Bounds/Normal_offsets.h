@@ -46,27 +46,17 @@ public:
   // a free vertex: the face of its bound's set.
   struct Face
   {
-    Eigen::Vector3d direction;
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
     int end = 0;
     bool free = false;
-    typename Bound::Face inner;
+    typename Bound::Face inner = Bound::Face::Zero();
   };
 
   // S: the starts, each inside its set of `bound`; N: unit directions, or zero for a free
   // vertex.
   Normal_offset_bound(const Bound& bound, const Points& S, Points N)
-    : m_bound(bound), m_start(S), m_direction(std::move(N)), m_lo(S.rows()), m_hi(S.rows())
-  {
-    parallel_for_blocks(static_cast<std::size_t>(S.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const auto row = static_cast<Eigen::Index>(i);
-        const bool on_line = !is_free(i);
-        m_lo[row] = on_line ? -segment_end(i, -1) : 0.;
-        m_hi[row] = on_line ? segment_end(i, 1) : 0.;
-      }
-    });
-  }
+    : m_bound(bound), m_start(S), m_direction(std::move(N))
+  {}
 
   bool is_free(std::size_t i) const { return point(m_direction, i).isZero(); }
   const Points& directions() const { return m_direction; }
@@ -98,9 +88,12 @@ public:
       m_bound.project(X, i);
       return;
     }
-    const auto row = static_cast<Eigen::Index>(i);
     const Eigen::Vector3d s = point(m_start, i), n = point(m_direction, i);
-    const double t = (std::min)((std::max)((point(X, i) - s).dot(n), m_lo[row]), m_hi[row]);
+    double t = (point(X, i) - s).dot(n);
+    point(X, i) = s + t * n;
+    if(m_bound.contains(X, i))
+      return;
+    t = t > 0 ? (std::min)(t, segment_end(i, 1)) : (std::max)(t, -segment_end(i, -1));
     point(X, i) = s + shortened(i, t) * n;
   }
 
@@ -111,22 +104,22 @@ public:
     face.free = is_free(i);
     if(face.free)
       return m_bound.is_on_boundary(X, i, face.inner);
-    const auto row = static_cast<Eigen::Index>(i);
     face.direction = point(m_direction, i);
     const double t = (point(X, i) - point(m_start, i)).dot(face.direction);
-    const double tolerance = end_tolerance * (m_hi[row] - m_lo[row]);
-    face.end = t >= m_hi[row] - tolerance ? 1 : t <= m_lo[row] + tolerance ? -1 : 0;
+    const double hi = segment_end(i, 1), lo = -segment_end(i, -1), tolerance = end_tolerance * (hi - lo);
+    face.end = t >= hi - tolerance ? 1 : t <= lo + tolerance ? -1 : 0;
     return true;
   }
 
-  // An end blocks only if the descent direction -g pushes past it; the line always binds.
+  // Only an end that the descent direction -g pushes past binds: the quasi-Newton method's
+  // directions already lie along the lines, its gradients restricted to them by
+  // Normal_offset_objective and its steps taken along them, so that the active set lists the
+  // few vertices at a blocking end rather than all of them.
   static bool keep_blocked(Face& face, const Eigen::Vector3d& g)
   {
     if(face.free)
       return Bound::keep_blocked(face.inner, g);
-    if(!(face.end * face.direction.dot(g) < 0))
-      face.end = 0;
-    return true;
+    return face.end * face.direction.dot(g) < 0;
   }
 
   // Onto the line (an orthogonal projection), or to nothing at a blocking end.
@@ -169,7 +162,6 @@ private:
 
   const Bound& m_bound;
   Points m_start, m_direction;
-  Eigen::VectorXd m_lo, m_hi; // the segment's ends, as offsets from the start
 };
 
 // The objective seen on the segments: its gradient restricted to each vertex's direction
