@@ -7,7 +7,7 @@
 // past it, and then stops the vertex; the restriction keeps the line; a vertex with no direction is the bound's own. On a separable quadratic, whose
 // minimizer over each segment is known, the quasi-Newton method finds it; on a plane patch with
 // noise across it, the default call recovers the plane. The default is the one documented: along
-// the normals with the ball, sliding with the box.
+// the normals with the ball, sliding with the box and the accurate objective.
 
 #include "test_support.h"
 
@@ -244,8 +244,9 @@ void check_plane_recovered()
   CHECK(std::is_sorted(energies.rbegin(), energies.rend()));
 }
 
-// Unset, tangential_motion is false with the ball and true with the box (the documented
-// default): the default call is bit for bit the call that sets it so, and differs from the other.
+// Unset, tangential_motion is false with the ball and true with the box and the accurate
+// objective (the documented default): the default call is bit for bit the call that sets it so,
+// and differs from the other.
 void check_default()
 {
   test::Mesh m = test::icosphere(3);
@@ -262,6 +263,9 @@ void check_default()
   CHECK(!test::identical(run(ball), run(CFP::tangential_motion(true, ball))));
   CHECK(test::identical(run(box), run(CFP::tangential_motion(true, box))));
   CHECK(!test::identical(run(box), run(CFP::tangential_motion(false, box))));
+  const auto accurate = CFP::fairing_objective(PMP::Constrained_fairing_objective::ACCURATE);
+  CHECK(test::identical(run(accurate), run(CFP::tangential_motion(true, accurate))));
+  CHECK(!test::identical(run(accurate), run(CFP::tangential_motion(false, accurate))));
 }
 
 int main()

@@ -91,8 +91,9 @@ options:
   --accurate               the accurate objective: closer to the true surface of a noisy scan,
                            a little less fair; not for surfaces extracted from volumes
   --tangential-motion      let the vertices also slide along the surface, as they do with
-                           --box: a lower bending energy, but farther from the true surface;
-                           by default each moves along the normal of the smoothed start only
+                           --box and --accurate: a lower bending energy, but farther from the
+                           true surface; by default each moves along the normal of the
+                           smoothed start only
   --label-format EXT       a label map's surfaces as ply (default), off, obj or stl
   --in-place               let OUT be IN: the result replaces the input once complete
   --help                   this text
@@ -501,7 +502,7 @@ int main(int argc, char* argv[])
     CFP::iteration_callback(
       std::ref(progress),
       CFP::tangential_motion(
-        options.tangential_motion || box,
+        options.tangential_motion || box || options.accurate,
         CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
                                                 : PMP::Constrained_fairing_objective::FAIREST,
                                CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound))))));

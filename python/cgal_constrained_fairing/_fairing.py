@@ -106,9 +106,11 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         paper's energy alone, which leaves needle-shaped triangles.
     tangential_motion : bool, optional
         Whether the vertices may also slide along the surface. By default they do not with the
-        default method and the ball bound: each moves along the normal of the smoothed start,
+        default method, the ball bound and the fairest objective: each moves along the normal of
+        the smoothed start,
         which keeps the surface nearer the true one and converges in far fewer iterations on
-        large meshes; with the box bound (voxel cells) and the paper's methods they slide.
+        large meshes; with the box bound (voxel cells), the accurate objective and the paper's
+        methods they slide.
     initial_smoothing_steps : int, optional
         Steps of bounded Taubin smoothing that make the starting point (default 16 for the
         default method, 0 for the paper's methods).

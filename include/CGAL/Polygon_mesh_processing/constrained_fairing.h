@@ -56,7 +56,8 @@ accuracy of the data (a scanner's precision, the voxel size of an isosurface) ke
 accuracy. More iterations can only lower the energy. The connectivity is not changed; border
 vertices move like the others, and border edges do not contribute to the energy.
 
-<b>Normal offsets.</b> With the default method and the ball bound, each vertex moves only along
+<b>Normal offsets.</b> With the default method, the ball bound and the fairest objective, each
+vertex moves only along
 one line, the normal of the smoothed start at that vertex, within its ball: the energy is
 minimized over these offsets, not over all positions in the balls. Vertices that also slide along
 the surface lower the energy further, but by taking the surface away from the true one: on the
@@ -64,7 +65,8 @@ noisy bunny (75 k to 1.2 M triangles, noise and `epsilon` 0.25 times the mean ed
 offsets end 1.5 to 1.6 times closer to the clean surface, with 1.4 times smaller normal errors
 and better triangles, in about 100 iterations at every size where sliding took 242 to 820
 (see the user manual). With the box bound (voxel cells, whose terraces the vertices must slide
-off) and with the paper's methods the vertices slide; `tangential_motion` chooses either way.
+off), the accurate objective and the paper's methods the vertices slide; `tangential_motion`
+chooses either way.
 Vertices with no normal (at triangles folded in the smoothed start) slide in any case.
 
 <b>Slivers.</b> A hinge of the bending energy costs less the shorter its edge and the flatter
@@ -265,7 +267,7 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDescription{whether the vertices may also slide along the surface, rather than
                           move along the normals of the smoothed start only (see above)}
     \cgalParamType{bool}
-    \cgalParamDefault{`false` with `QUASI_NEWTON` and the ball bound, `true` otherwise}
+    \cgalParamDefault{`false` with `QUASI_NEWTON`, the ball bound and `Constrained_fairing_objective::FAIREST`, `true` otherwise}
   \cgalParamNEnd
   \cgalParamNBegin{energy_decrease_threshold}
     \cgalParamDescription{the stopping threshold on the relative energy decrease per

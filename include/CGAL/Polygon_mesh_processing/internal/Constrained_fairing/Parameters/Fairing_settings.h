@@ -98,13 +98,15 @@ struct Fairing_settings
 
   // Whether the vertices slide along the surface, or move along the normals of the smoothed
   // start (Normal_offsets.h). Unless the user said, they move along the normals only with the
-  // quasi-Newton method and the ball: a ball of noise leaves the surface accurate along its
-  // normals, and there the sliding only lowers the energy at the expense of the distance to the
-  // true surface, while the vertices of voxel terraces, in boxes, must slide to reach it
-  // (doc/design_notes.md, "Normal offsets"); the paper's methods are the paper's.
+  // quasi-Newton method, the ball and the fairest objective: a ball of noise leaves the surface
+  // accurate along its normals, and there the sliding only lowers the energy at the expense of
+  // the distance to the true surface, while the vertices of voxel terraces, in boxes, must slide
+  // to reach it, and the accurate objective's fidelity term holds them where the sliding helps
+  // it a little (doc/design_notes.md, "Normal offsets"); the paper's methods are the paper's.
   bool slides(bool box) const
   {
-    return tangential_motion ? *tangential_motion : method != Constrained_fairing_method::QUASI_NEWTON || box;
+    return tangential_motion ? *tangential_motion
+                             : method != Constrained_fairing_method::QUASI_NEWTON || box || is_accurate();
   }
 
   // A box bound: asked for, or implied by a box parameter (a uniform half-extents or a map).
