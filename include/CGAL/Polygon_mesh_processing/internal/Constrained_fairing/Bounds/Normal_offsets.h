@@ -105,9 +105,10 @@ public:
     if(face.free)
       return m_bound.is_on_boundary(X, i, face.inner);
     face.direction = point(m_direction, i);
-    const double t = (point(X, i) - point(m_start, i)).dot(face.direction);
-    const double hi = segment_end(i, 1), lo = -segment_end(i, -1), tolerance = end_tolerance * (hi - lo);
-    face.end = t >= hi - tolerance ? 1 : t <= lo + tolerance ? -1 : 0;
+    // only the end on the offset's side can be reached
+    const double t = (point(X, i) - point(m_start, i)).dot(face.direction), side = t < 0 ? -1. : 1.;
+    const bool at_end = side * t >= segment_end(i, side) - end_tolerance * m_bound.size(i);
+    face.end = at_end ? int(side) : 0;
     return true;
   }
 
@@ -134,7 +135,7 @@ public:
   }
 
 private:
-  // Within this fraction of the segment's length from an end, a vertex is at it.
+  // Within this fraction of the bound's size from an end, a vertex is at it.
   static constexpr double end_tolerance = 1e-9;
 
   // t, or a little less far from the start, so that s + t n is inside the set: rounding may
@@ -152,8 +153,9 @@ private:
     return 0;
   }
 
-  // How far the line goes from the start in the direction sign n before it leaves the set: the
-  // bound's own estimate, shortened until the end passes the bound's test.
+  // How far the line goes from the start in the direction sign n (sign = -1 or 1) before it
+  // leaves the set, a length: the bound's own estimate, shortened until the end passes the
+  // bound's test.
   double segment_end(std::size_t i, double sign) const
   {
     const Eigen::Vector3d s = point(m_start, i), n = sign * point(m_direction, i);

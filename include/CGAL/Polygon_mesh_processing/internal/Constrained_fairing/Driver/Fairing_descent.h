@@ -43,7 +43,7 @@ class Fairing_descent
 public:
   // `moving[i]`: whether vertex i may move (fold repair re-seeds only those); `sliding[i]`:
   // whether it has no surface normal, and moves freely in its set even where the others move
-  // along the normals.
+  // along the normals (empty: none).
   Fairing_descent(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving,
                   const std::vector<bool>& sliding, const Fairing_settings& settings, const SparseLinearSolver& solver)
     : m_mesh(mesh), m_bound(bound), m_moving(moving), m_sliding(sliding), m_settings(settings), m_solver(solver)

@@ -111,8 +111,9 @@ public:
     });
   }
 
-  // Every vertex of a mesh has a surface normal: none slides freely (Normal_offsets.h).
-  std::vector<bool> sliding_points(const Part& part) const { return std::vector<bool>(part.size(), false); }
+  // Every vertex of a mesh has a surface normal: none slides freely (Normal_offsets.h), an
+  // empty list.
+  std::vector<bool> sliding_points(const Part&) const { return {}; }
 
   double sliver_threshold(const Fairing_settings& settings) const { return settings.sliver_threshold; }
 
