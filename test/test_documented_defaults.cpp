@@ -53,7 +53,12 @@ std::string number(double x)
 }
 
 // A fraction in percent, as the texts state it: 0.01 as "1 %".
-std::string percent(double fraction) { return number(std::round(100 * fraction * 1e12) / 1e12) + " %"; }
+std::string percent(double fraction)
+{
+  std::ostringstream text;
+  text << std::round(100 * fraction * 1e12) / 1e12 << " %";
+  return text.str();
+}
 
 bool states(const std::string& text, const std::string& phrase)
 {
@@ -97,7 +102,11 @@ int main()
   };
   const std::string remaining = percent(q.options.remaining_fraction);
   CHECK(p.options.remaining_fraction == 0);
-  CHECK(states(header, "is at most " + remaining + " of the energy) or the last three"));
+  CHECK(states(header, "is at most " + remaining + " of the energy, and, along the normals,"));
+  CHECK(p.options.remaining_motion == 0 && q.options.remaining_motion > 0);
+  const std::string motion = percent(q.options.remaining_motion);
+  CHECK(states(header, "move across itself is at most " + motion + " of `epsilon`) or the last three"));
+  CHECK(states(header, "the surface's motion still to come at most " + motion + " of"));
   CHECK(states(header, "decrease still to come is at most " + remaining + " of the energy"));
   CHECK(defaults.at("number_of_iterations") ==
         per_method(double(q.options.max_iterations), double(p.options.max_iterations)));

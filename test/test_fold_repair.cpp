@@ -7,10 +7,12 @@
 // must leave none with the default method (a tenth at most with the Newton method), report the
 // counts (checked against an independent count), keep the bound exact and respect
 // number_of_iterations. The callback hears the path to the result only: numbers 1, 2, ... up
-// to number_of_iterations, an objective that never rises and ends at final_energy. The full call gets twice
-// the default number of iterations: from this raw input, where many triangles start as slivers,
-// the descent alone takes about 1100 quasi-Newton or 350 Newton iterations (and ends at half
-// the energy it reached without the barrier against slivers), and the repair needs some left.
+// to number_of_iterations, an objective that never rises and ends at final_energy. The full call gets
+// three times the default number of iterations (quasi-Newton) or twice (Newton): from this raw
+// input, where many triangles start as slivers, the descent alone takes about 1950 quasi-Newton
+// iterations (its surface still moves by 0.5 % of epsilon every 25 iterations for most of them)
+// or 350 Newton iterations (and ends at half the energy it reached without the barrier against
+// slivers), and the repair needs some left.
 
 #include "test_support.h"
 
@@ -68,7 +70,7 @@ int main()
     double previous = std::numeric_limits<double>::infinity();
     bool monotone = true;
     std::size_t last_iteration = 0;
-    const unsigned int budget = method == PMP::Constrained_fairing_method::QUASI_NEWTON ? 2000 : 400;
+    const unsigned int budget = method == PMP::Constrained_fairing_method::QUASI_NEWTON ? 3000 : 400;
     const auto r = PMP::constrained_fairing(
       repaired, eps,
       CFP::initial_smoothing_steps(0, CFP::fairing_method(method, CFP::iteration_callback([&](std::size_t it, double e) {

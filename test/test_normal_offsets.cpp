@@ -7,7 +7,8 @@
 // past it, and then stops the vertex; the restriction keeps the line; a vertex with no direction is the bound's own. On a separable quadratic, whose
 // minimizer over each segment is known, the quasi-Newton method finds it; on a plane patch with
 // noise across it, the default call recovers the plane. The default is the one documented: along
-// the normals with the ball, sliding with the box and the accurate objective.
+// the normals with the ball, sliding with the box and the accurate objective. Where the default
+// stops, three times the iterations barely move the surface.
 
 #include "test_support.h"
 
@@ -268,8 +269,35 @@ void check_default()
   CHECK(!test::identical(run(accurate), run(CFP::tangential_motion(false, accurate))));
 }
 
+// The honest stop: where the default call stops, having judged the surface's motion (Surface_motion.h),
+// three times as many iterations with the stopping rule off move its points by at most 1 % of
+// epsilon (RMS: along the normals, each point's displacement is the surface's motion there).
+void check_honest_stop()
+{
+  test::Mesh m = test::icosphere(4);
+  const double h = test::mean_edge_length(m), eps = 0.25 * h;
+  test::add_noise(m, eps, 5);
+  test::Mesh long_run = m;
+  const auto r = PMP::constrained_fairing(m, eps);
+  CHECK(r.status == PMP::Constrained_fairing_status::CONVERGED);
+  const auto r_long = PMP::constrained_fairing(
+    long_run, eps, CFP::energy_decrease_threshold(0., CGAL::parameters::number_of_iterations(3 * r.number_of_iterations)));
+  CHECK(r_long.number_of_iterations > r.number_of_iterations);
+  const std::vector<test::Point> a = test::points(m), b = test::points(long_run);
+  double squares = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    squares += CGAL::squared_distance(a[i], b[i]);
+  const double moved = std::sqrt(squares / double(a.size())) / eps;
+  std::cout << "  honest stop: " << r.number_of_iterations << " iterations; " << r_long.number_of_iterations
+            << " move the points by " << 100 * moved << " % of epsilon (RMS), the energy by "
+            << 100 * (r.final_energy - r_long.final_energy) / r.final_energy << " %" << std::endl;
+  CHECK(moved <= 0.01);
+  CHECK(r.final_energy - r_long.final_energy <= 0.03 * r.final_energy);
+}
+
 int main()
 {
+  check_honest_stop();
   for(double scale : {1e-3, 1., 1e6})
     for(double size : {1e-6 * scale, 0.1 * scale, 10 * scale})
     {

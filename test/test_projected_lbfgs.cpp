@@ -6,7 +6,8 @@
 // be approached (test_normal_offsets has the same on segments), with every
 // iterate in the bound and the energy never rising; the result is bit-identical whatever the
 // number of threads; no step flips or collapses a triangle; the fused vector passes give the
-// same bits as the separate ones; and the stopping rule tells slow progress from convergence.
+// same bits as the separate ones; and the stopping rule tells slow progress from convergence and
+// measures the surface's motion exactly.
 
 #include "test_support.h"
 
@@ -217,8 +218,45 @@ void check_stopping_rule()
   CHECK(k == stop);
 }
 
+// The surface's motion (Surface_motion.h): each vertex's displacement over a window relative to
+// its own bound's size, pinned vertices left out, exact far from the origin; the remainder
+// extrapolated from windows whose motion falls by a fixed ratio is exact, so the rule settles at
+// the first window where it is at most the fraction, and a window with no motion settles.
+void check_surface_motion()
+{
+  const double origin = 1e6, fraction = 0.005, ratio = 0.6;
+  const std::vector<double> sizes{1e-3, 0., 4e-3, 2e-3};
+  CF::Points X0(4, 3);
+  for(Eigen::Index i = 0; i < 4; ++i)
+    X0.row(i) << origin + double(i), origin, -origin;
+  const CF::Ball_bound bound(X0, CF::Bound_sizes(sizes));
+  // Window k moves vertex i along x by a fraction m_k = 0.2 ratio^k of its size.
+  const auto window_motion = [&](std::size_t k) { return 0.2 * std::pow(ratio, double(k)); };
+  const auto remainder = [&](std::size_t k) { return window_motion(k) * ratio / (1 - ratio); };
+  CF::Points X = X0;
+  CF::Surface_motion motion;
+  motion.end_window(bound, X);
+  CHECK(!motion.has_settled(fraction));
+  std::size_t settled = 0;
+  for(std::size_t k = 0; k < 40 && settled == 0; ++k)
+  {
+    for(Eigen::Index i = 0; i < 4; ++i)
+      X(i, 0) += window_motion(k) * sizes[std::size_t(i)];
+    motion.end_window(bound, X);
+    CHECK(std::abs(motion.last_window() - window_motion(k)) <= 1e-4 * window_motion(k));
+    if(motion.has_settled(fraction))
+      settled = k;
+  }
+  CHECK(settled > 0);
+  CHECK(remainder(settled) <= fraction * (1 + 1e-4));
+  CHECK(remainder(settled - 1) > fraction);
+  motion.end_window(bound, X);
+  CHECK(motion.last_window() == 0 && motion.has_settled(fraction));
+}
+
 int main()
 {
+  check_surface_motion();
   check_stopping_rule();
   check_fused_passes();
   check_known_minimum(Deviation_bound::BALL);

@@ -100,8 +100,9 @@ and `z` (box, `c` its centre and `h` its half-extents).
 The iterations stop when the energy decreased by less than `energy_decrease_threshold` per
 iteration relatively, on average over the last 50 iterations (quasi-Newton method, which also
 waits until what is left to gain, extrapolated from the last two such windows, is at most 1 % of
-the energy) or the last three (the paper's methods), when no feasible direction decreases it, or
-after `number_of_iterations` iterations.
+the energy, and, along the normals, until what the surface has left to move across itself is at
+most 0.5 % of `epsilon`) or the last three (the paper's methods), when no feasible direction
+decreases it, or after `number_of_iterations` iterations.
 
 The loops over vertices, triangles and hinges run in parallel when %CGAL is linked with TBB
 (`CGAL_LINKED_WITH_TBB`); the result is bit-identical for any number of threads.
@@ -273,8 +274,9 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDescription{the stopping threshold on the relative energy decrease per
                           iteration (averaged over 50 iterations for `QUASI_NEWTON`, three for the
                           paper's methods; `QUASI_NEWTON` also waits until the extrapolated
-                          decrease still to come is at most 1 % of the energy); `0` runs all
-                          `number_of_iterations` iterations}
+                          decrease still to come is at most 1 % of the energy and, along the
+                          normals, the surface's motion still to come at most 0.5 % of
+                          `epsilon`); `0` runs all `number_of_iterations` iterations}
     \cgalParamType{double}
     \cgalParamDefault{`1.25e-4` for `QUASI_NEWTON`, `1e-3` for the paper's methods}
   \cgalParamNEnd

@@ -43,9 +43,11 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Stiffness_preconditioner.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Stopping_rule.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Surface_motion.h>
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -82,6 +84,12 @@ public:
     double E = m_energy.value_and_gradient(X, m_G, &m_scales);
     Stopping_rule history(options);
     history.push(E);
+    std::optional<Surface_motion> motion;
+    if(options.remaining_motion > 0)
+    {
+      motion.emplace();
+      motion->end_window(m_bound, X);
+    }
     // The first step moves the vertex of largest scaled gradient by epsilon.
     precondition(m_G, m_D);
     const double largest_step = m_D.rowwise().norm().maxCoeff();
@@ -131,7 +139,9 @@ public:
       m_G.swap(m_G_next);
       m_scales.swap(m_scales_next);
       E = accepted.energy;
-      if(!history.next_iteration(E, callback, report))
+      if(motion && (report.iterations + 1) % options.motion_window == 0)
+        motion->end_window(m_bound, X);
+      if(!history.next_iteration(E, callback, report, !motion || motion->has_settled(options.remaining_motion)))
         break;
     }
     report.final_energy = E;

@@ -25,6 +25,11 @@ struct Solver_options
   // And, if positive, when the decrease still to come, extrapolated from the last two windows,
   // is at most this fraction of the energy (Stopping_rule.h).
   double remaining_fraction = 0;
+  // And, if positive, where the vertices move along normals only, when the surface's motion
+  // still to come, extrapolated from its last two windows of `motion_window` iterations, is at
+  // most this fraction of the bounds' sizes, RMS (Surface_motion.h).
+  double remaining_motion = 0;
+  std::size_t motion_window = 25;
   // Newton method: the largest number of conjugate gradient iterations per step (at least one
   // is made).
   std::size_t cg_iterations = 1;

@@ -14,6 +14,9 @@
 // Steady progress, however slow, has q near or above 1 and does not stop the run; progress that
 // fades does.
 //
+// Where the shape's motion is judged too (Surface_motion.h), the solver tells whether it has
+// settled, and the rule stops only when both have.
+//
 // Only the last two windows are kept (a ring of 2 window + 1 energies), so that the rule's memory
 // does not grow with the number of iterations allowed or run.
 
@@ -49,8 +52,10 @@ public:
 
   // Counts an iteration that reached `energy`, tells the callback, and returns false, with
   // the status set, when the run stops there: cancelled by the callback, or stalled.
+  // `settled`: whether the shape has stopped moving too, where that is judged
+  // (Surface_motion.h).
   template <typename Callback>
-  bool next_iteration(double energy, const Callback& callback, Solver_report& report)
+  bool next_iteration(double energy, const Callback& callback, Solver_report& report, bool settled = true)
   {
     push(energy);
     ++report.iterations;
@@ -59,7 +64,7 @@ public:
       report.status = Constrained_fairing_status::CANCELLED;
       return false;
     }
-    if(has_stalled())
+    if(settled && has_stalled())
     {
       report.status = Constrained_fairing_status::CONVERGED;
       return false;

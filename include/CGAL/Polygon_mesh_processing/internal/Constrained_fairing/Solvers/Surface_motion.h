@@ -1,0 +1,118 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// How far the surface still moves across itself: the stopping rule's measure of the shape
+// (Stopping_rule.h). At the end of each window of iterations, the RMS over the vertices of
+// each one's displacement since the window began, relative to its bound's size; what is left
+// to move is extrapolated from the last two windows as the energy's remainder is.
+//
+// Why the displacement is the motion across the surface: the rule is asked only where the
+// vertices move along the normals of the smoothed start (Normal_offsets.h), so that every
+// displacement is a normal one, but for the few vertices that move freely (folded starts,
+// junction points), which it overstates. Sliding vertices would keep moving along the surface
+// long after the shape has settled; there the energy alone judges.
+//
+// The window's start is kept in single precision, relative to the input points: each
+// coordinate of X - X0 is within the bound's size, so its rounding is 1e-7 of that size
+// whatever the mesh's coordinates are.
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SURFACE_MOTION_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SURFACE_MOTION_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Normal_offsets.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// Whether vertex i's displacement is not its motion across the surface: a vertex that moves
+// freely in its set among the normal offsets.
+template <typename Bound>
+bool moves_freely(const Bound&, std::size_t)
+{
+  return false;
+}
+
+template <typename Bound>
+bool moves_freely(const Normal_offset_bound<Bound>& bound, std::size_t i)
+{
+  return bound.is_free(i);
+}
+
+class Surface_motion
+{
+public:
+  // Ends a window at X (the first call starts the first one).
+  template <typename Bound>
+  void end_window(const Bound& bound, const Points& X)
+  {
+    const Points& X0 = bound.input_points();
+    const std::size_t n = static_cast<std::size_t>(X.rows());
+    const bool first = m_start.rows() == 0;
+    if(first)
+    {
+      m_start.resize(X.rows(), 3);
+      for(std::size_t i = 0; i < n; ++i)
+        m_counted += counts(bound, i) ? 1 : 0;
+    }
+    const double squares = parallel_sum(n, m_partial, [&](std::size_t begin, std::size_t end) {
+      double sum = 0;
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const auto row = static_cast<Eigen::Index>(i);
+        const Eigen::Vector3f offset = (point(X, i) - point(X0, i)).cast<float>();
+        if(!first && counts(bound, i))
+          sum += ((offset - m_start.row(row).transpose()).cast<double>() / bound.size(i)).squaredNorm();
+        m_start.row(row) = offset.transpose();
+      }
+      return sum;
+    });
+    if(first)
+      return;
+    m_previous = m_last;
+    m_last = m_counted > 0 ? std::sqrt(squares / m_counted) : 0;
+  }
+
+  // Whether what is left to move, extrapolated from the last two windows (a window that moved
+  // m, q times the one before, leaves m q / (1 - q)), is at most `fraction` of the bounds'
+  // sizes (RMS); a window that moved nothing has settled.
+  bool has_settled(double fraction) const
+  {
+    if(m_last == 0)
+      return true;
+    if(!(m_previous > 0))
+      return false;
+    const double q = m_last / m_previous;
+    return q < 1 && m_last * q / (1 - q) <= fraction;
+  }
+
+  // The RMS motion of the last window, relative to the bounds' sizes (negative before two
+  // windows ends).
+  double last_window() const { return m_last; }
+
+private:
+  template <typename Bound>
+  static bool counts(const Bound& bound, std::size_t i)
+  {
+    return bound.size(i) > 0 && !moves_freely(bound, i);
+  }
+
+  Float_points m_start; // X - X0 at the window's start
+  double m_counted = 0;   // vertices that may move
+  double m_last = -1, m_previous = -1;
+  std::vector<double> m_partial;
+};
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SURFACE_MOTION_H
