@@ -100,7 +100,8 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         Stop when the relative energy decrease per iteration falls below this (averaged over 50
         iterations for the default method; default 1.25e-4, and 1e-3 for the paper's methods);
         ``0`` runs all `max_iterations`. The default method also waits until the extrapolated
-        decrease still to come is at most 1 % of the energy.
+        decrease still to come is at most 1 % of the energy and, along the normals, until what
+        the surface has left to move across itself is at most 0.5 % of `epsilon` (RMS).
     sliver_barrier_weight : float, optional
         The weight of the barrier against slivers (default 1, per triangle); ``0`` minimizes the
         paper's energy alone, which leaves needle-shaped triangles.

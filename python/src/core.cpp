@@ -654,6 +654,7 @@ PYBIND11_MODULE(_core, m)
                                  [&d](const char* name, const char*, auto, const auto& field) { d[name] = field; });
       d["energy_decrease_window"] = defaults.options.window;
       d["energy_remaining_fraction"] = defaults.options.remaining_fraction;
+      d["remaining_motion"] = defaults.options.remaining_motion;
       return d;
     },
     py::arg("method"));

@@ -18,8 +18,9 @@ PAPER = _core.default_settings(_core.Method.ACTIVE_SET_NEWTON)
 
 
 def percent(fraction):
-    """A fraction as the texts state it, in percent: ``0.01`` as ``"1 %"``."""
-    return f"{number(round(100 * fraction, 12))} %"
+    """A fraction as the texts state it, in percent: ``0.01`` as ``"1 %"``, ``0.005`` as
+    ``"0.5 %"``."""
+    return f"{round(100 * fraction, 12):g} %"
 
 
 def number(x):
@@ -63,6 +64,9 @@ def test_fair_docstring():
         assert text in sections[name], (name, sections[name])
     remaining = f"still to come is at most {percent(q['energy_remaining_fraction'])} of the energy"
     assert remaining in " ".join(sections["energy_decrease_threshold"].split())
+    assert p["remaining_motion"] == 0 < q["remaining_motion"]
+    motion = f"left to move across itself is at most {percent(q['remaining_motion'])} of `epsilon`"
+    assert motion in " ".join(sections["energy_decrease_threshold"].split())
     assert f'``"{q["objective"].name.lower()}"`` (the default)' in sections["objective"]
 
 
@@ -71,7 +75,8 @@ def test_named_settings_are_the_keywords_of_fair():
     each one (``SETTING_ARGUMENTS``) agree, and each keyword is documented."""
     names = [name for name, _ in _core.named_settings()]
     assert sorted(names) == sorted(SETTING_ARGUMENTS)
-    assert set(names) == set(QUASI_NEWTON) - {"energy_decrease_window", "energy_remaining_fraction"}
+    assert set(names) == set(QUASI_NEWTON) - {"energy_decrease_window", "energy_remaining_fraction",
+                                              "remaining_motion"}
     keywords = inspect.signature(cf.fair).parameters
     sections = _docstring_sections(cf.fair)
     for name in names:

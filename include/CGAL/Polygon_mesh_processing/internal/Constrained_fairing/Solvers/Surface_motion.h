@@ -8,9 +8,9 @@
 //
 // Why the displacement is the motion across the surface: the rule is asked only where the
 // vertices move along the normals of the smoothed start (Normal_offsets.h), so that every
-// displacement is a normal one, but for the few vertices that move freely (folded starts,
-// junction points), which it overstates. Sliding vertices would keep moving along the surface
-// long after the shape has settled; there the energy alone judges.
+// displacement is a normal one; the few vertices that move freely there (folded starts,
+// junction points) are left out, as their sliding is not the shape's. Sliding vertices would keep
+// moving along the surface long after the shape has settled; there the energy alone judges.
 //
 // The window's start is kept in single precision, relative to the input points: each
 // coordinate of X - X0 is within the bound's size, so its rounding is 1e-7 of that size
