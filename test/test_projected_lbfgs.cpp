@@ -198,6 +198,14 @@ void check_stopping_rule()
   CHECK(stop > 0);
   CHECK(remaining_is_small(stop));
   CHECK(!remaining_is_small(stop - 1));
+  // A shape that has not settled holds the stop back, however small the energy's remainder.
+  {
+    CF::Stopping_rule rule(options);
+    CF::Solver_report report;
+    rule.push(fading(0));
+    for(std::size_t k = 1; k <= 1000; ++k)
+      CHECK(rule.next_iteration(fading(k), CF::Always_continue(), report, false));
+  }
   CF::Solver_options threshold_alone = options;
   threshold_alone.remaining_fraction = 0;
   const std::size_t early = stopping_iteration(threshold_alone, fading, 1000);
@@ -252,6 +260,20 @@ void check_surface_motion()
   CHECK(remainder(settled - 1) > fraction);
   motion.end_window(bound, X);
   CHECK(motion.last_window() == 0 && motion.has_settled(fraction));
+
+  // Among normal offsets, a vertex that moves freely (no direction) is left out: its sliding
+  // is not the shape's.
+  CF::Points N = CF::Points::Zero(4, 3);
+  for(Eigen::Index i = 0; i < 3; ++i)
+    N(i, 0) = 1;
+  const CF::Normal_offset_bound<CF::Ball_bound> offsets(bound, X0, N);
+  X = X0;
+  CF::Surface_motion along_normals;
+  along_normals.end_window(offsets, X);
+  X(0, 0) += 0.1 * sizes[0];
+  X(3, 1) += 0.9 * sizes[3]; // the free vertex
+  along_normals.end_window(offsets, X);
+  CHECK(std::abs(along_normals.last_window() - 0.1 / std::sqrt(2.)) <= 1e-5);
 }
 
 int main()

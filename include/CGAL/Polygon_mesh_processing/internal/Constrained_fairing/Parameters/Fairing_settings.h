@@ -73,7 +73,7 @@ constexpr double default_label_volume_weight = 1;
 // 1.5 %, so 2 % would have stopped at 19.3 M). Where the vertices move along the normals, it
 // also waits until the surface's motion still to come, extrapolated from its last two windows of
 // 25 iterations, is at most 0.5 % of epsilon, RMS (Surface_motion.h): there the energy's rule
-// stopped at its floor of 100 iterations at every size, where three times as many still moved
+// stopped at its floor of 100 iterations (105 at 1.2 M), where three times as many still moved
 // the surface by 1.23 % of epsilon at 1.2 M triangles; the extrapolation came within a factor of
 // 1.4 of the motion that followed, hence half the 1 % asked. It starts from a smoothed input
 // (Smoothed_start.h); the paper's methods start from the input.

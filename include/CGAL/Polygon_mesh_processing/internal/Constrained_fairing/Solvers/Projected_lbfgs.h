@@ -33,6 +33,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_PROJECTED_LBFGS_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Active_set.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
@@ -87,6 +88,7 @@ public:
     std::optional<Surface_motion> motion;
     if(options.remaining_motion > 0)
     {
+      CGAL_precondition(options.motion_window > 0);
       motion.emplace();
       motion->end_window(m_bound, X);
     }

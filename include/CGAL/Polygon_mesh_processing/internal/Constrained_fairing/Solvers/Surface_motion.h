@@ -55,9 +55,10 @@ public:
   {
     const Points& X0 = bound.input_points();
     const std::size_t n = static_cast<std::size_t>(X.rows());
-    const bool first = m_start.rows() == 0;
+    const bool first = !m_started;
     if(first)
     {
+      m_started = true;
       m_start.resize(X.rows(), 3);
       for(std::size_t i = 0; i < n; ++i)
         m_counted += counts(bound, i) ? 1 : 0;
@@ -77,7 +78,7 @@ public:
     if(first)
       return;
     m_previous = m_last;
-    m_last = m_counted > 0 ? std::sqrt(squares / m_counted) : 0;
+    m_last = m_counted > 0 ? std::sqrt(squares / double(m_counted)) : 0;
   }
 
   // Whether what is left to move, extrapolated from the last two windows (a window that moved
@@ -93,8 +94,8 @@ public:
     return q < 1 && m_last * q / (1 - q) <= fraction;
   }
 
-  // The RMS motion of the last window, relative to the bounds' sizes (negative before two
-  // windows ends).
+  // The RMS motion of the last window, relative to the bounds' sizes (negative before the first
+  // window ends).
   double last_window() const { return m_last; }
 
 private:
@@ -104,8 +105,9 @@ private:
     return bound.size(i) > 0 && !moves_freely(bound, i);
   }
 
-  Float_points m_start; // X - X0 at the window's start
-  double m_counted = 0;   // vertices that may move
+  bool m_started = false;
+  Float_points m_start;       // X - X0 at the window's start
+  std::size_t m_counted = 0; // vertices whose motion counts
   double m_last = -1, m_previous = -1;
   std::vector<double> m_partial;
 };
