@@ -88,22 +88,18 @@ private:
              Constrained_fairing_result& result) const
   {
     if(m_settings.slides(std::is_same<Bound, Box_bound>::value))
-    {
-      Solver_options options = m_settings.options;
-      options.remaining_motion = 0; // sliding vertices: the energy alone judges (Surface_motion.h)
-      solve_over(m_bound, energy, options, callback, X, result);
-    }
+      solve_over(m_bound, energy, callback, X, result);
     else
     {
       const Normal_offset_bound<Bound> segments(m_bound, X, normal_directions(X));
       Normal_offset_objective<Fairing_objective, Bound> offsets(energy, segments);
-      solve_over(segments, offsets, m_settings.options, callback, X, result);
+      solve_over(segments, offsets, callback, X, result);
     }
   }
 
   template <typename Feasible_set, typename Objective>
-  void solve_over(const Feasible_set& bound, Objective& energy, const Solver_options& options,
-                  const Iteration_callback& callback, Points& X, Constrained_fairing_result& result) const
+  void solve_over(const Feasible_set& bound, Objective& energy, const Iteration_callback& callback, Points& X,
+                  Constrained_fairing_result& result) const
   {
     std::optional<Projected_lbfgs<Feasible_set, Objective> > quasi_newton;
     std::optional<Active_set_newton<Feasible_set, SparseLinearSolver, Objective> > active_set;
@@ -114,10 +110,10 @@ private:
     const auto descend = [&](const Solver_options& options, const Iteration_callback& heard, Points& Y) {
       return quasi_newton ? quasi_newton->run(Y, options, heard) : active_set->run(Y, options, heard);
     };
-    Solver_report path = descend(options, callback, X);
+    Solver_report path = descend(m_settings.options, callback, X);
     if(path.status != Constrained_fairing_status::LINEAR_SOLVER_FAILED)
     {
-      const Fold_count folds = repair_folds(m_mesh, bound, m_moving, descend, options, callback, X, path);
+      const Fold_count folds = repair_folds(m_mesh, bound, m_moving, descend, m_settings.options, callback, X, path);
       result.number_of_folded_faces = folds.after;
       result.number_of_unfolded_faces = folds.before > folds.after ? folds.before - folds.after : 0;
       result.final_energy = path.final_energy;

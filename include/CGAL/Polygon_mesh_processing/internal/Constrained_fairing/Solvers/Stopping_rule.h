@@ -35,6 +35,15 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
+// Whether what is left, extrapolated from a window that gained `last` after one that gained
+// `previous` (q = last / previous each window, as in linear convergence: last q / (1 - q)), is
+// at most `at_most`. Steady progress, q near or above 1, is never small.
+inline bool remainder_is_small(double last, double previous, double at_most)
+{
+  const double q = last / previous;
+  return q < 1 && last * q / (1 - q) <= at_most;
+}
+
 class Stopping_rule
 {
 public:
@@ -86,9 +95,7 @@ public:
       return true; // no decrease over a whole window: stationary
     if(m_count <= 2 * m_window)
       return false;
-    const double previous = ago(2 * m_window) - before;
-    const double q = last / previous;
-    return q < 1 && last * q / (1 - q) <= m_remaining_fraction * newest;
+    return remainder_is_small(last, ago(2 * m_window) - before, m_remaining_fraction * newest);
   }
 
 private:

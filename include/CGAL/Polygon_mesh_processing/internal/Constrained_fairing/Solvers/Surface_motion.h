@@ -6,11 +6,11 @@
 // each one's displacement since the window began, relative to its bound's size; what is left
 // to move is extrapolated from the last two windows as the energy's remainder is.
 //
-// Why the displacement is the motion across the surface: the rule is asked only where the
-// vertices move along the normals of the smoothed start (Normal_offsets.h), so that every
-// displacement is a normal one; the few vertices that move freely there (folded starts,
-// junction points) are left out, as their sliding is not the shape's. Sliding vertices would keep
-// moving along the surface long after the shape has settled; there the energy alone judges.
+// Why only the vertices on normal offsets count: there a displacement is along the normal of
+// the smoothed start (Normal_offsets.h), the surface's own motion. A vertex that moves freely in
+// its set (every vertex of a sliding run; folded starts and junction points among the offsets)
+// keeps moving along the surface long after the shape has settled, so it is left out; where
+// none counts, the shape has settled and the energy alone judges.
 //
 // The window's start is kept in single precision, relative to the input points: each
 // coordinate of X - X0 is within the bound's size, so its rounding is 1e-7 of that size
@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Normal_offsets.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Stopping_rule.h>
 
 #include <cmath>
 #include <cstddef>
@@ -33,11 +34,11 @@ namespace internal {
 namespace Constrained_fairing {
 
 // Whether vertex i's displacement is not its motion across the surface: a vertex that moves
-// freely in its set among the normal offsets.
+// freely in its set, as all do outside the normal offsets.
 template <typename Bound>
 bool moves_freely(const Bound&, std::size_t)
 {
-  return false;
+  return true;
 }
 
 template <typename Bound>
@@ -59,10 +60,17 @@ public:
     if(first)
     {
       m_started = true;
-      m_start.resize(X.rows(), 3);
       for(std::size_t i = 0; i < n; ++i)
         m_counted += counts(bound, i) ? 1 : 0;
+      if(m_counted == 0)
+      {
+        m_last = 0; // nothing to wait for, and nothing kept
+        return;
+      }
+      m_start.resize(X.rows(), 3);
     }
+    if(m_counted == 0)
+      return;
     const double squares = parallel_sum(n, m_partial, [&](std::size_t begin, std::size_t end) {
       double sum = 0;
       for(std::size_t i = begin; i < end; ++i)
@@ -78,7 +86,7 @@ public:
     if(first)
       return;
     m_previous = m_last;
-    m_last = m_counted > 0 ? std::sqrt(squares / double(m_counted)) : 0;
+    m_last = std::sqrt(squares / double(m_counted));
   }
 
   // Whether what is left to move, extrapolated from the last two windows (a window that moved
@@ -88,14 +96,11 @@ public:
   {
     if(m_last == 0)
       return true;
-    if(!(m_previous > 0))
-      return false;
-    const double q = m_last / m_previous;
-    return q < 1 && m_last * q / (1 - q) <= fraction;
+    return m_previous > 0 && remainder_is_small(m_last, m_previous, fraction);
   }
 
   // The RMS motion of the last window, relative to the bounds' sizes (negative before the first
-  // window ends).
+  // window ends; 0 where no vertex counts).
   double last_window() const { return m_last; }
 
 private:
