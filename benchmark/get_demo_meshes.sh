@@ -1,8 +1,9 @@
 #!/bin/bash
 # Fetches the CGAL demo meshes that fairing_accuracy measures (femur, camel, bull, lion-head,
-# homer, armadillo) from Debian's libcgal-demo package (data/meshes in
-# /usr/share/doc/libcgal-dev/data.tar.gz), into DIR (default: cgal_demo_data in the current
-# folder, which is where a build folder's fairing_accuracy looks).
+# homer, armadillo) and the CAD parts that fairing_features measures (fandisk, joint, blade,
+# part, dragknob, anchor, cube-meshed) from Debian's libcgal-demo package (data/meshes
+# in /usr/share/doc/libcgal-dev/data.tar.gz), into DIR (default: cgal_demo_data in the current
+# folder, which is where a build folder's benchmarks look).
 #
 #   get_demo_meshes.sh [DIR]
 set -euo pipefail
@@ -15,7 +16,7 @@ dpkg -x libcgal-demo_*.deb package
 mkdir -p "$dir"
 tar -xzf package/usr/share/doc/libcgal-dev/data.tar.gz -C "$work"
 mkdir -p "$dir/meshes"
-for name in femur camel bull lion-head homer armadillo; do
+for name in femur camel bull lion-head homer armadillo fandisk joint blade part dragknob anchor cube-meshed; do
   cp "$(find "$work" -path "*/data/meshes/$name.off" | head -1)" "$dir/meshes/"
 done
 echo "CGAL demo meshes in $dir/meshes"

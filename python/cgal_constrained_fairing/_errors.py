@@ -43,6 +43,8 @@ class Defect(str, enum.Enum):
     """``fidelity_weight`` is negative, NaN or infinite."""
     INVALID_SLIVER_BARRIER_WEIGHT = "INVALID_SLIVER_BARRIER_WEIGHT"
     """``sliver_barrier_weight`` is negative, NaN or infinite."""
+    INVALID_FEATURE_ANGLE = "INVALID_FEATURE_ANGLE"
+    """``feature_angle`` is not a number of degrees strictly between 0 and 180."""
     BOX_WITH_BALL = "BOX_WITH_BALL"
     """Box half-extents or centres were given with ``bound="ball"``."""
     INVALID_BOX_EXTENTS = "INVALID_BOX_EXTENTS"

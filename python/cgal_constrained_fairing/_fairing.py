@@ -33,6 +33,7 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
          energy_decrease_threshold: Optional[float] = None,
          sliver_barrier_weight: Optional[float] = None,
          tangential_motion: Optional[bool] = None,
+         feature_angle: Optional[float] = None,
          initial_smoothing_steps: Optional[int] = None,
          conjugate_gradient_iterations: Optional[int] = None,
          progress: Progress = None) -> Tuple[np.ndarray, Report]:
@@ -112,6 +113,11 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         which keeps the surface nearer the true one and converges in far fewer iterations on
         large meshes; with the box bound (voxel cells), the accurate objective and the paper's
         methods they slide.
+    feature_angle : float, optional
+        Keep creases sharp: the edges across which the bilaterally filtered face normals are more
+        than this many degrees apart (strictly between 0 and 180) are detected as creases; the
+        energy has no hinge across them, and the curves they form are faired as curves within the
+        same bound. Unset, no edge is a crease. ``report.number_of_feature_edges`` counts them.
     initial_smoothing_steps : int, optional
         Steps of bounded Taubin smoothing that make the starting point (default 16 for the
         default method, 0 for the paper's methods).
@@ -167,6 +173,7 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
                            fidelity_weight=fidelity_weight,
                            sliver_barrier_weight=sliver_barrier_weight,
                            tangential_motion=tangential_motion,
+                           feature_angle=feature_angle,
                            energy_decrease_threshold=energy_decrease_threshold,
                            max_iterations=max_iterations,
                            initial_smoothing_steps=initial_smoothing_steps,
@@ -212,6 +219,7 @@ SETTING_ARGUMENTS = {
     "sliver_barrier_weight": lambda v: number_argument(v, "sliver_barrier_weight",
                                                        Defect.INVALID_SLIVER_BARRIER_WEIGHT),
     "tangential_motion": lambda v: flag_argument(v, "tangential_motion"),
+    "feature_angle": lambda v: number_argument(v, "feature_angle", Defect.INVALID_FEATURE_ANGLE),
 }
 
 

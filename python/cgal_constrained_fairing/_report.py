@@ -58,6 +58,9 @@ class Report:
         Faces still turned over against their neighbours at the end.
     number_of_unfolded_faces : int
         Folded faces that the fold repair undid.
+    number_of_feature_edges : int
+        Edges kept as creases (those ``feature_angle`` detected), across which the energy has no
+        hinge.
     number_of_degenerate_edges : int
         Interior edges left out of the energy because a triangle of theirs is degenerate in
         the input.
@@ -82,6 +85,7 @@ class Report:
     number_of_fixed_vertices: int
     number_of_folded_faces: int
     number_of_unfolded_faces: int
+    number_of_feature_edges: int
     number_of_degenerate_edges: int
     deviation: np.ndarray
     at_bound: np.ndarray
@@ -100,6 +104,8 @@ class Report:
         if self.number_of_folded_faces or self.number_of_unfolded_faces:
             lines.append(f"  {self.number_of_unfolded_faces} faces unfolded, "
                          f"{self.number_of_folded_faces} left folded")
+        if self.number_of_feature_edges:
+            lines.append(f"  {self.number_of_feature_edges} edges kept as creases")
         if self.number_of_degenerate_edges:
             lines.append(f"  {self.number_of_degenerate_edges} edges with a degenerate "
                          "triangle left out of the energy")

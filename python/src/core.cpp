@@ -248,6 +248,7 @@ py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_ar
   report["number_of_fixed_vertices"] = result.number_of_fixed_vertices;
   report["number_of_folded_faces"] = result.number_of_folded_faces;
   report["number_of_unfolded_faces"] = result.number_of_unfolded_faces;
+  report["number_of_feature_edges"] = result.number_of_feature_edges;
   report["number_of_degenerate_edges"] = result.number_of_degenerate_edges;
   if(result)
   {
@@ -609,6 +610,7 @@ PYBIND11_MODULE(_core, m)
     .value("INVALID_EPSILON", D::INVALID_EPSILON)
     .value("INVALID_FIDELITY_WEIGHT", D::INVALID_FIDELITY_WEIGHT)
     .value("INVALID_SLIVER_BARRIER_WEIGHT", D::INVALID_SLIVER_BARRIER_WEIGHT)
+    .value("INVALID_FEATURE_ANGLE", D::INVALID_FEATURE_ANGLE)
     .value("BOX_WITH_BALL", D::BOX_WITH_BALL)
     .value("INVALID_BOX_EXTENTS", D::INVALID_BOX_EXTENTS)
     .value("INVALID_TOLERANCE", D::INVALID_TOLERANCE)

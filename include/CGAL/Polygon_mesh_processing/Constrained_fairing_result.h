@@ -63,6 +63,8 @@ enum class Constrained_fairing_defect
   INVALID_FIDELITY_WEIGHT,
   /// `sliver_barrier_weight` is negative, NaN or infinite
   INVALID_SLIVER_BARRIER_WEIGHT,
+  /// `feature_angle` is not a number of degrees strictly between 0 and 180
+  INVALID_FEATURE_ANGLE,
   /// box parameters were given with `deviation_bound(Deviation_bound::BALL)`
   BOX_WITH_BALL,
   /// a box half-extent (`box_half_extents`, `vertex_box_half_extents_map`) is negative, NaN or infinite
@@ -123,6 +125,9 @@ struct Constrained_fairing_result
   /// and their neighbours are re-seeded and the descent resumes, kept if the objective ends
   /// lower, and repeated (three rounds at most) while fewer faces are folded
   std::size_t number_of_unfolded_faces = 0;
+  /// the edges kept as creases: those of `edge_is_constrained_map` and those the detection of
+  /// `feature_angle` found; the energy has no hinge across them
+  std::size_t number_of_feature_edges = 0;
   /// the interior edges left out of the energy because one of their two triangles is
   /// degenerate (of nearly zero area) in the input
   std::size_t number_of_degenerate_edges = 0;

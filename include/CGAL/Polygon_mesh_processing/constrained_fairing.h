@@ -29,7 +29,9 @@ Constrained_fairing_result constrained_fairing(const FaceRange* region, Triangle
 {
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_property_map(CGAL::vertex_point, tmesh));
-  Mesh_input<TriangleMesh, std::remove_const_t<decltype(vpm)>, FaceRange> input(tmesh, vpm, region);
+  const auto feature_edges = read_feature_edge_map(np);
+  Mesh_input<TriangleMesh, std::remove_const_t<decltype(vpm)>, FaceRange, std::decay_t<decltype(feature_edges)> > input(
+    tmesh, vpm, region, feature_edges);
   const auto callback = read_iteration_callback(np);
   return run_fairing_driver(input, epsilon, read_fairing_settings(np), read_vertex_maps(np),
                             Iteration_callback(callback), read_sparse_linear_solver(np));
@@ -77,6 +79,20 @@ angle, each triangle with `q < q0` adds `w (q0 / (q + q0 / 100) - 1)^2`, `w` the
 `sliver_barrier_weight`. Better triangles are left alone, so that the shape and the bending
 energy reached do not change; triangles degenerate in the input are left out, as in the energy.
 `sliver_barrier_weight(0)` minimizes the paper's energy alone.
+
+<b>Creases.</b> The bending energy rounds every crease as far as the bound lets it. Edges marked
+in `edge_is_constrained_map`, or detected by `feature_angle`, are creases kept sharp: the energy
+has no hinge across them, the curves they form are faired as curves within the same bounds (a
+second-difference term per point on exactly two of them), and their points slide freely in their
+balls, as they have no surface normal; a point on one crease edge or on three or more (an end, a
+corner) is faired by its surfaces alone. The detection compares the face normals after a
+bilateral filter, which averages the noise on each side of a crease and leaves the two sides
+apart, and drops the curves that end freely after fewer than 8 edges (spurs, isolated edges) and
+closed ones of fewer edges. On six noisy CAD parts of CGAL's demo data (`benchmark/fairing_features`,
+noise and `epsilon` 0.25 times the mean edge length) `feature_angle(30)` finds 93 to 100 % of
+their edges sharper than 30 degrees, at most 1 % of what it finds is not sharp, and its mean
+normal error is 0.08 to 0.42 times the default call's; on a thin turbine blade it finds 59 %,
+and at twice the noise it marks 22 to 33 % false edges (see the user manual).
 
 <b>Tolerances.</b> `epsilon` is the tolerance of every vertex and caps all the others:
 - `vertex_tolerance_map` gives each vertex its own tolerance `t(v)`, and the vertex then stays
@@ -126,6 +142,7 @@ The checks, in the order they are made (the order of `Constrained_fairing_defect
 - `epsilon` negative, zero, NaN or infinite;
 - `fidelity_weight` negative, NaN or infinite;
 - `sliver_barrier_weight` negative, NaN or infinite;
+- `feature_angle` not strictly between 0 and 180 degrees, or NaN;
 - box parameters with `deviation_bound(Deviation_bound::BALL)`;
 - `box_half_extents` negative, NaN or infinite;
 - for each vertex that may move, in order: its tolerance, its box half-extents negative, NaN or
@@ -269,6 +286,22 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
                           move along the normals of the smoothed start only (see above)}
     \cgalParamType{bool}
     \cgalParamDefault{`false` with `QUASI_NEWTON`, the ball bound and `Constrained_fairing_objective::FAIREST`, `true` otherwise}
+  \cgalParamNEnd
+  \cgalParamNBegin{edge_is_constrained_map}
+    \cgalParamDescription{a property map from edges to `bool`: the edges marked `true` are
+                          creases, kept sharp (see "Creases" above); with `feature_angle`, the
+                          edges it detects are also set to `true` in it if it is writable}
+    \cgalParamType{a class model of `ReadablePropertyMap` with
+                   `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool`
+                   as value type}
+    \cgalParamDefault{no edge is a crease, unless `feature_angle` is given}
+  \cgalParamNEnd
+  \cgalParamNBegin{feature_angle}
+    \cgalParamDescription{detects the creases, kept sharp (see "Creases" above): the edges
+                          across which the bilaterally filtered face normals are more than this
+                          many degrees apart}
+    \cgalParamType{double, strictly between 0 and 180}
+    \cgalParamDefault{unset: no detection}
   \cgalParamNEnd
   \cgalParamNBegin{energy_decrease_threshold}
     \cgalParamDescription{the stopping threshold on the relative energy decrease per

@@ -75,6 +75,7 @@ enum fairing_objective_t { fairing_objective };
 enum fidelity_weight_t { fidelity_weight };
 enum sliver_barrier_weight_t { sliver_barrier_weight };
 enum tangential_motion_t { tangential_motion };
+enum feature_angle_t { feature_angle };
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -137,6 +138,9 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(fidelity_weight)
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(sliver_barrier_weight)
 /// whether the vertices may also slide along the surface, a `bool`
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(tangential_motion)
+/// the dihedral angle in degrees, a `double` in (0, 180), over which edges are detected as
+/// creases, kept sharp
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(feature_angle)
 #undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
 
 } // namespace constrained_fairing_parameters

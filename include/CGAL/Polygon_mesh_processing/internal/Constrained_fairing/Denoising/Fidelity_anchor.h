@@ -5,11 +5,7 @@
 // in three stages, every vertex kept in its bound:
 //  1. projected Taubin steps (Smoothed_start.h), which remove most of the noise without
 //     shrinking the surface;
-//  2. bilateral filtering of the face normals (Y. Zheng, H. Fu, O. K.-C. Au, C.-L. Tai,
-//     "Bilateral normal filtering for mesh denoising", IEEE TVCG 2011), each face's normal
-//     replaced by the mean of its own and its edge neighbours' normals, weighted by area, by
-//     a Gaussian of the distance between centroids and by a Gaussian of the difference between
-//     normals;
+//  2. bilateral filtering of the face normals (Normal_filter.h);
 //  3. the vertices moved to fit the filtered normals (X. Sun, P. L. Rosin, R. R. Martin,
 //     F. C. Langbein, "Fast and effective feature-preserving mesh denoising", IEEE TVCG 2007):
 //     x_i <- x_i + 1/|F_i| sum over the faces f of x_i of n_f n_f^T (c_f - x_i), c_f the
@@ -24,14 +20,13 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FIDELITY_ANCHOR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FIDELITY_ANCHOR_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
-#include <array>
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -51,26 +46,17 @@ public:
   static constexpr double normal_difference_sigma = 0.4;
   static constexpr std::size_t normal_fit_steps = 10;
 
-  explicit Fidelity_anchor(const Hinge_mesh& mesh) : m_mesh(mesh), m_vertex_triangles(vertex_triangles(mesh))
-  {
-    // Each triangle's edge neighbours, from the hinges (a border edge has none).
-    m_neighbours.assign(mesh.triangles.size(), {no_face, no_face, no_face});
-    std::vector<unsigned char> count(mesh.triangles.size(), 0);
-    for(const Hinge& h : mesh.hinges)
-      for(int k = 0; k < 2; ++k)
-      {
-        const Index f = h.f[std::size_t(k)];
-        m_neighbours[f][count[f]++] = h.f[std::size_t(1 - k)];
-      }
-  }
+  explicit Fidelity_anchor(const Hinge_mesh& mesh)
+    : m_mesh(mesh), m_vertex_triangles(vertex_triangles(mesh)), m_filter(mesh)
+  {}
 
   // Replaces X, feasible in `bound`, by its anchor, feasible too.
   template <typename Bound>
   void apply(const Bound& bound, Points& X)
   {
     smooth_start(m_mesh, bound, anchor_taubin_steps, X);
-    face_geometry(X);
-    filter_normals();
+    m_filter.set_points(X);
+    m_filter.filter(normal_filter_steps, normal_difference_sigma);
     for(std::size_t step = 0; step < normal_fit_steps; ++step)
     {
       fit_vertices(X);
@@ -79,69 +65,11 @@ public:
   }
 
 private:
-  static constexpr Index no_face = ~Index(0);
-
-  void face_geometry(const Points& X)
-  {
-    const std::size_t nf = m_mesh.triangles.size();
-    m_normal.resize(nf);
-    m_centroid.resize(nf);
-    m_area.resize(nf);
-    parallel_for_blocks(nf, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t f = begin; f < end; ++f)
-      {
-        const Eigen::Vector3d normal = area_normal(m_mesh, X, f);
-        const double length = normal.norm();
-        m_area[f] = length / 2;
-        m_normal[f] = length > 0 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();
-        m_centroid[f] = centroid(m_mesh, X, f);
-      }
-    });
-  }
-
-  // The mean distance between the centroids of edge neighbours: the spatial Gaussian's width.
-  double centroid_spacing() const
-  {
-    double sum = 0;
-    std::size_t pairs = 0;
-    for(const Hinge& h : m_mesh.hinges)
-    {
-      sum += (m_centroid[h.f[0]] - m_centroid[h.f[1]]).norm();
-      ++pairs;
-    }
-    return pairs > 0 ? sum / double(pairs) : 0;
-  }
-
-  void filter_normals()
-  {
-    const double spacing = centroid_spacing();
-    if(!(spacing > 0))
-      return;
-    const double spatial = 1 / (2 * spacing * spacing),
-                 range = 1 / (2 * normal_difference_sigma * normal_difference_sigma);
-    std::vector<Eigen::Vector3d> filtered(m_normal.size());
-    for(std::size_t step = 0; step < normal_filter_steps; ++step)
-    {
-      parallel_for_blocks(m_normal.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-        for(std::size_t f = begin; f < end; ++f)
-        {
-          Eigen::Vector3d sum = m_area[f] * m_normal[f];
-          for(Index g : m_neighbours[f])
-            if(g != no_face)
-              sum += m_area[g] * std::exp(-spatial * (m_centroid[f] - m_centroid[g]).squaredNorm()) *
-                     std::exp(-range * (m_normal[f] - m_normal[g]).squaredNorm()) * m_normal[g];
-          const double length = sum.norm();
-          filtered[f] = length > 0 ? Eigen::Vector3d(sum / length) : m_normal[f];
-        }
-      });
-      m_normal.swap(filtered);
-    }
-  }
-
   // One step of the vertex fit, with the filtered normals and the current centroids.
   void fit_vertices(Points& X)
   {
     const std::size_t nf = m_mesh.triangles.size();
+    m_centroid.resize(nf);
     parallel_for_blocks(nf, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t f = begin; f < end; ++f)
         m_centroid[f] = centroid(m_mesh, X, f);
@@ -154,17 +82,19 @@ private:
           continue;
         Eigen::Vector3d move = Eigen::Vector3d::Zero();
         for(auto f = first; f != last; ++f)
-          move += m_normal[*f] * m_normal[*f].dot(m_centroid[*f] - point(X, i));
+        {
+          const Eigen::Vector3d& n = m_filter.normal(*f);
+          move += n * n.dot(m_centroid[*f] - point(X, i));
+        }
         point(X, i) += move / double(last - first);
       }
     });
   }
 
   const Hinge_mesh& m_mesh;
-  std::vector<std::array<Index, 3> > m_neighbours; // by triangle, no_face past its edge neighbours
-  Rows_by_vertex<Index> m_vertex_triangles;           // for the vertex fit's gather
-  std::vector<Eigen::Vector3d> m_normal, m_centroid;
-  std::vector<double> m_area;
+  Rows_by_vertex<Index> m_vertex_triangles; // for the vertex fit's gather
+  Normal_filter m_filter;
+  std::vector<Eigen::Vector3d> m_centroid;
 };
 
 } // namespace Constrained_fairing

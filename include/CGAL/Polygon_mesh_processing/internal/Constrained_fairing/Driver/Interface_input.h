@@ -8,7 +8,7 @@
 //  - its triangles are oriented from their smaller label into their larger, and its hinges are
 //    the edges of exactly two triangles of one interface (where an interface meets itself along
 //    an edge, no hinge);
-//  - its objective adds the junction lines' term (Junction_curves.h) and the labels' volumes
+//  - its objective adds the junction lines' term (Curve_bending.h) and the labels' volumes
 //    (Label_volumes.h), each label's held at its input value, and its barrier pushes back
 //    needles of a larger angle;
 //  - after the descent, the points of triangles that cross are pulled back (Crossing_repair.h).
@@ -24,7 +24,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
@@ -66,7 +66,7 @@ public:
     std::vector<bool> flipped;
     if(Input_error error = interface_error(n, m_triangles, m_face_labels, interface_of, flipped, m_sides))
       return error;
-    m_junctions.emplace(n, m_sides, m_face_labels);
+    m_junctions.emplace(junction_lines(n, m_sides, m_face_labels));
     m_oriented.resize(m);
     for(std::size_t f = 0; f < m; ++f)
     {
@@ -81,7 +81,7 @@ public:
   template <typename VertexMaps>
   Interface_part part(const VertexMaps& maps) const
   {
-    std::vector<bool> fixed = m_junctions->fixed;
+    std::vector<bool> fixed = m_junctions->end;
     for(std::size_t k = 0; k < fixed.size(); ++k)
       fixed[k] = fixed[k] || maps.is_constrained(k);
     return Interface_part(std::move(fixed));
@@ -109,7 +109,7 @@ public:
   }
 
   // A hinge where exactly two triangles of one interface share an edge.
-  Hinge_mesh hinges(const Interface_part& part, const std::vector<bool>&) const
+  Hinge_mesh hinges(const Interface_part& part, const std::vector<bool>&, const Points&, const Fairing_settings&) const
   {
     std::vector<std::array<Index, 2> > hinge_faces;
     for(std::size_t i = 0, j = 0; i < m_sides.size(); i = j)
@@ -121,6 +121,9 @@ public:
     }
     return Hinge_mesh(part.size(), m_oriented, hinge_faces);
   }
+
+  // Its junction lines are not creases.
+  std::size_t number_of_feature_edges() const { return 0; }
 
   // The points of the junction lines, which have no surface normal: they slide freely in their
   // boxes where the others move along the normals (Normal_offsets.h).
@@ -140,9 +143,9 @@ public:
 
   void add_terms(Fairing_objective& objective, const Points& X0, const Fairing_settings& settings)
   {
-    m_curves.emplace(m_junctions->inner, X0, settings.junction_weight);
+    m_curves.emplace(m_junctions->inner, X0, settings.curve_weight);
     m_volumes.emplace(m_oriented, dense_label_sides(), X0, settings.label_volume_weight);
-    objective.add_junction_curves(*m_curves);
+    objective.add_curve_bending(*m_curves);
     objective.add_label_volumes(*m_volumes);
   }
 
@@ -190,9 +193,9 @@ private:
   const TriangleRange& m_triangles;
   const LabelPairRange& m_face_labels;
   std::vector<Interface_side> m_sides;
-  std::optional<Junction_lines> m_junctions;
+  std::optional<Curve_network> m_junctions;
   std::vector<std::array<Index, 3> > m_oriented; // in the soup's numbering, then the solver's
-  std::optional<Junction_curves> m_curves;
+  std::optional<Curve_bending> m_curves;
   std::optional<Label_volumes> m_volumes;
 };
 

@@ -143,6 +143,12 @@ inline Input_error invalid_sliver_barrier_weight_error(double nu)
           "sliver_barrier_weight must be finite and non-negative (" + std::to_string(nu) + ")"};
 }
 
+inline Input_error invalid_feature_angle_error(double degrees)
+{
+  return {Defect::INVALID_FEATURE_ANGLE,
+          "feature_angle must be a number of degrees strictly between 0 and 180 (" + std::to_string(degrees) + ")"};
+}
+
 inline Input_error box_with_ball_error()
 {
   return {Defect::BOX_WITH_BALL, "box half-extents or centres were given with the ball bound"};

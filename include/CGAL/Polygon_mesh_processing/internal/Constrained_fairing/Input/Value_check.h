@@ -56,6 +56,15 @@ inline Input_error sliver_barrier_weight_error(const Fairing_settings& settings)
   return std::isfinite(w) && w >= 0 ? Input_error() : invalid_sliver_barrier_weight_error(w);
 }
 
+// NaN fails both comparisons.
+inline Input_error feature_angle_error(const Fairing_settings& settings)
+{
+  if(!settings.feature_angle)
+    return {};
+  const double degrees = *settings.feature_angle;
+  return degrees > 0 && degrees < 180 ? Input_error() : invalid_feature_angle_error(degrees);
+}
+
 inline bool are_valid_box_extents(const Eigen::Vector3d& h) { return h.allFinite() && (h.array() >= 0).all(); }
 
 // A box parameter with the ball named.
@@ -138,7 +147,8 @@ Input_error value_error(const Part& part, const Points& X0, const Triangles& tri
                         const Fairing_settings& settings, const VertexMaps& maps)
 {
   for(Input_error error : {coordinate_error(part, X0), epsilon_error(epsilon), fidelity_weight_error(settings),
-                           sliver_barrier_weight_error(settings), bound_shape_error(settings),
+                           sliver_barrier_weight_error(settings), feature_angle_error(settings),
+                           bound_shape_error(settings),
                            box_half_extents_error(settings)})
     if(error)
       return error;

@@ -8,6 +8,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_HINGE_MESH_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_HINGE_MESH_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Curve_network.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 
@@ -43,6 +44,9 @@ struct Hinge_mesh
   std::size_t number_of_vertices = 0;
   std::vector<std::array<Index, 3> > triangles;
   std::vector<Hinge> hinges;
+  // A mesh's creases (Feature_edges.h): edges between two triangles with no hinge, smoothed and
+  // faired as curves; empty on a multi-label surface, whose junction lines are not its edges'.
+  Curve_network creases;
 
   // The largest mesh the 32-bit indices hold (Bending_energy numbers face corners 3 f + k).
   static constexpr std::size_t max_faces = 0x55555555;

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
-// against slivers (Sliver_barrier.h), plus, on a multi-label surface, the bending of its
-// junction lines (Junction_curves.h) and its labels' volumes (Label_volumes.h), plus, for the
+// against slivers (Sliver_barrier.h), plus the bending of the curves the energy's hinges do not
+// cross (Curve_bending.h: a mesh's creases, a multi-label surface's junction lines), plus, on a
+// multi-label surface, its labels' volumes (Label_volumes.h), plus, for the
 // accurate objective, a fidelity term that keeps the surface near an anchor a_i:
 //
 //   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
@@ -25,7 +26,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Junction_curves.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
@@ -69,8 +70,8 @@ public:
     }
   }
 
-  // Adds the bending of the junction lines of a multi-label surface (kept by reference).
-  void add_junction_curves(const Junction_curves& curves) { m_curves = &curves; }
+  // Adds the bending of the creases or junction lines (kept by reference).
+  void add_curve_bending(const Curve_bending& curves) { m_curves = &curves; }
 
   // Adds the volumes of the labels of a multi-label surface (kept by reference).
   void add_label_volumes(Label_volumes& volumes) { m_volumes = &volumes; }
@@ -128,7 +129,7 @@ private:
 
   const Hinge_mesh& m_mesh;
   const Points* m_anchor = nullptr;
-  const Junction_curves* m_curves = nullptr;
+  const Curve_bending* m_curves = nullptr;
   Label_volumes* m_volumes = nullptr;
   Bending_energy m_bending;
   Sliver_barrier m_barrier;

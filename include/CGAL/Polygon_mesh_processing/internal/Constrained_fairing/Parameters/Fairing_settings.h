@@ -49,9 +49,9 @@ constexpr double default_sliver_threshold = 0.0906485352754803;
 // instead of 1 the Voronoi maps kept angles of 4.7 degrees.
 constexpr double default_interface_sliver_angle = 6;
 
-// The weight of the junction lines' term of a multi-label surface (Junction_curves.h), per point
-// of a line, against the bending energy's hinges.
-constexpr double default_junction_weight = 1;
+// The weight of the curves' term (Curve_bending.h: a multi-label surface's junction lines, a
+// mesh's creases), per inner point of a curve, against the bending energy's hinges.
+constexpr double default_curve_weight = 1;
 
 // The weight of the labels' volumes of a multi-label surface (Label_volumes.h), per point,
 // against the bending energy's hinges. Held exactly, from 1 to 30 the phantoms of
@@ -133,8 +133,11 @@ struct Fairing_settings
   double sliver_barrier_weight = default_sliver_barrier_weight;
   double sliver_threshold = default_sliver_threshold;
   double interface_sliver_angle = default_interface_sliver_angle;
-  double junction_weight = default_junction_weight;
+  double curve_weight = default_curve_weight;
   double label_volume_weight = default_label_volume_weight;
+  // The dihedral angle, in degrees, over which the feature detection (Feature_edges.h) marks an
+  // edge as a crease; unset, only the edges the user marks are.
+  std::optional<double> feature_angle;
   // Whether the vertices may also slide along the surface, as the user set it; unset, they do
   // (see slides()).
   std::optional<bool> tangential_motion;

@@ -35,6 +35,7 @@ void for_each_named_setting(Settings& settings, const F& f)
   f("fidelity_weight", "fidelity_weight", fidelity_weight, settings.fidelity_weight);
   f("sliver_barrier_weight", "sliver_barrier_weight", sliver_barrier_weight, settings.sliver_barrier_weight);
   f("tangential_motion", "tangential_motion", tangential_motion, settings.tangential_motion);
+  f("feature_angle", "feature_angle", feature_angle, settings.feature_angle);
 }
 
 // The tag of an undocumented named parameter that gives all the settings at once, the method

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The per-vertex property maps of a call, as the public functions read them from their named
-// parameters (read_named_parameters.h): each one the user's map, or No_vertex_map where the user
+// parameters (read_named_parameters.h): each one the user's map, or No_map where the user
 // gave none, so that whether a map is given is known when compiling and an absent one costs
 // nothing. The keys are the input's own (a mesh's vertex descriptors, a soup's point indices).
 
@@ -22,11 +22,18 @@ namespace internal {
 namespace Constrained_fairing {
 
 // The place of a map the user did not give.
-struct No_vertex_map
+struct No_map
 {};
 
 template <typename Map>
-constexpr bool is_given_map = !std::is_same_v<Map, No_vertex_map>;
+constexpr bool is_given_map = !std::is_same_v<Map, No_map>;
+
+// Whether `Map` is a given map that put() writes to.
+template <typename Map, typename = void>
+constexpr bool is_writable_map = false;
+template <typename Map>
+constexpr bool is_writable_map<Map, std::enable_if_t<is_given_map<Map> > > =
+  std::is_convertible_v<typename boost::property_traits<Map>::category, boost::writable_property_map_tag>;
 
 template <typename ToleranceMap, typename IsConstrainedMap, typename BoxHalfExtentsMap, typename BoxCenterMap,
           typename DeviationMap, typename AtBoundMap>

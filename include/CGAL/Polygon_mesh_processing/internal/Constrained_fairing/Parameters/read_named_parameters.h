@@ -3,7 +3,8 @@
 //
 // The one place where the named parameters of the public functions are read: into the plain
 // settings (Fairing_settings.h, through the table of Named_settings.h), the per-vertex maps
-// (Vertex_maps.h), the callback and the linear solver, which is all the drivers below them see.
+// (Vertex_maps.h), the feature edges, the callback and the linear solver, which is all the
+// drivers below them see.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_READ_NAMED_PARAMETERS_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_READ_NAMED_PARAMETERS_H
@@ -42,17 +43,25 @@ auto read_vertex_maps(const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const auto tolerance = choose_parameter(get_parameter(np, vertex_tolerance_map), No_vertex_map());
+  const auto tolerance = choose_parameter(get_parameter(np, vertex_tolerance_map), No_map());
   const auto is_constrained =
-    choose_parameter(get_parameter(np, internal_np::vertex_is_constrained), No_vertex_map());
-  const auto extents = choose_parameter(get_parameter(np, vertex_box_half_extents_map), No_vertex_map());
-  const auto centre = choose_parameter(get_parameter(np, vertex_box_center_map), No_vertex_map());
-  const auto deviation = choose_parameter(get_parameter(np, vertex_deviation_map), No_vertex_map());
-  const auto at_bound = choose_parameter(get_parameter(np, vertex_at_bound_map), No_vertex_map());
+    choose_parameter(get_parameter(np, internal_np::vertex_is_constrained), No_map());
+  const auto extents = choose_parameter(get_parameter(np, vertex_box_half_extents_map), No_map());
+  const auto centre = choose_parameter(get_parameter(np, vertex_box_center_map), No_map());
+  const auto deviation = choose_parameter(get_parameter(np, vertex_deviation_map), No_map());
+  const auto at_bound = choose_parameter(get_parameter(np, vertex_at_bound_map), No_map());
   return Vertex_maps<std::decay_t<decltype(tolerance)>, std::decay_t<decltype(is_constrained)>,
                      std::decay_t<decltype(extents)>, std::decay_t<decltype(centre)>,
                      std::decay_t<decltype(deviation)>, std::decay_t<decltype(at_bound)> >{
     tolerance, is_constrained, extents, centre, deviation, at_bound};
+}
+
+// The map of the edges to keep as creases that `np` gives (`edge_is_constrained_map`), or
+// No_map.
+template <typename NamedParameters>
+auto read_feature_edge_map(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_is_constrained), No_map());
 }
 
 // The settings that `np` gives, each one it does not give at its default.

@@ -1,20 +1,24 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The bending of the junction lines of a multi-label surface, where three or more labels meet:
+// The bending of curves made of edges of the surface (Curve_network.h): the junction lines of a
+// multi-label surface, where three or more labels meet, and the creases of a mesh (its feature
+// edges):
 //
 //   C = w * sum over the inner points i of a line of |x_p - 2 x_i + x_n|^2 / l_i^2,
 //
 // p and n the neighbours of i along its line, l_i the mean length of its two segments in the
-// input. Why: a junction line is not an edge of any one interface, so the bending energy, whose
-// hinges lie inside the interfaces, does not see it; left to the interfaces alone it would be
-// pulled into a crease or rounded off. The second difference fairs it as a curve (a straight
-// line, a circle: its turning, not its place), and dividing by l_i^2 makes each term
-// dimensionless and scale-invariant, as a hinge of the bending energy is: a line of turning angle
-// theta per segment adds w theta^2 per point, as a hinge bent by theta adds about 3 theta^2.
+// input. Why: the bending energy has no hinge across such a line (a junction line is not an edge
+// of any one interface; a crease's hinges are left out so that it stays sharp), so it does not
+// see it; left to the surfaces alone a junction line would be pulled into a crease or rounded
+// off, and a crease would follow the noise of its points. The second difference fairs it as a
+// curve (a straight line, a circle: its turning, not its place), and dividing by l_i^2 makes
+// each term dimensionless and scale-invariant, as a hinge of the bending energy is: a line of
+// turning angle theta per segment adds w theta^2 per point, as a hinge bent by theta adds about
+// 3 theta^2.
 
-#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_JUNCTION_CURVES_H
-#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_JUNCTION_CURVES_H
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CURVE_BENDING_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CURVE_BENDING_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
@@ -28,13 +32,13 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-class Junction_curves
+class Curve_bending
 {
 public:
   // `points[k]` = {p, i, n}: inner point i of a line and its neighbours, in the solver's order;
   // X0 the input points; `weight` the term's, per point of a line, against the bending
   // energy's hinges.
-  Junction_curves(const std::vector<std::array<Index, 3> >& points, const Points& X0, double weight)
+  Curve_bending(const std::vector<std::array<Index, 3> >& points, const Points& X0, double weight)
     : m_points(points), m_coefficient(points.size())
   {
     for(std::size_t k = 0; k < points.size(); ++k)
@@ -95,4 +99,4 @@ private:
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_JUNCTION_CURVES_H
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CURVE_BENDING_H

@@ -1,0 +1,267 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Creases kept sharp: the default call against the same call with `feature_angle`, on noisy CAD
+// parts, and what the detection marks on organic meshes.
+//
+//   fairing_features [--demo DIR] [--angle DEG] [--faces N] [--runs N] [--threads K]
+//
+// CAD parts (fandisk, joint, blade, part, dragknob, anchor, cube-meshed from CGAL's
+// demo data in DIR: see get_demo_meshes.sh; skipped cleanly without them): each is a coarse
+// tessellation, so it is first remeshed with CGAL's isotropic_remeshing to about N faces
+// (default 20000), its edges sharper than the angle kept as constraints; that mesh is the clean
+// truth, and its edges whose dihedral angle is over the angle (default 30 degrees) are its sharp
+// edges. Then seeded uniform-ball noise of radius d h, d in {0.25, 0.5}, h the mean edge length,
+// and epsilon the noise radius. Measured against the clean mesh (surface_quality.h): the RMS
+// distance to the clean surface, the mean normal error over all faces and over the faces within
+// 2 h of a sharp edge, the smallest angle, the folded faces, the bound, the time (median of N
+// runs), and the detection: the share of the sharp edges found and of the found edges that are
+// not sharp. Methods: the default call, the accurate objective, the call with
+// `feature_angle(DEG)`, and the call given the clean sharp edges (`edge_is_constrained_map`:
+// what a perfect detection would give).
+// Organic meshes (the bundled bunny and elephant, 0.25 h of noise): the share of edges the
+// detection marks, and the energy against the default call's.
+
+#include "surface_quality.h"
+
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace benchmark;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+
+namespace {
+
+using Edge_flags = Mesh::Property_map<Mesh::Edge_index, bool>;
+
+// The clean part: `coarse` remeshed to about `target_faces` faces, its sharp edges kept.
+Mesh remeshed(Mesh coarse, double angle, double target_faces)
+{
+  auto sharp = coarse.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+  PMP::detect_sharp_edges(coarse, angle, sharp);
+  const double area = PMP::area(coarse);
+  const double length = std::sqrt(4 * area / (std::sqrt(3.) * target_faces));
+  PMP::isotropic_remeshing(faces(coarse), length, coarse,
+                           CGAL::parameters::number_of_iterations(5).edge_is_constrained_map(sharp));
+  coarse.remove_property_map(sharp);
+  coarse.collect_garbage();
+  return coarse;
+}
+
+// The interior edges of `mesh` whose dihedral angle is over `angle` degrees (CGAL's
+// detect_sharp_edges also marks the border edges).
+Edge_flags sharp_edges(Mesh& mesh, double angle, const std::string& name)
+{
+  auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>(name, false).first;
+  PMP::detect_sharp_edges(mesh, angle, sharp);
+  for(auto e : edges(mesh))
+    sharp[e] = sharp[e] && !is_border(e, mesh);
+  return sharp;
+}
+
+double segment_distance(const Point& p, const Point& a, const Point& b)
+{
+  const K::Vector_3 ab = b - a, ap = p - a;
+  const double t = std::clamp(ap * ab / ab.squared_length(), 0., 1.);
+  return std::sqrt(CGAL::squared_distance(p, a + t * ab));
+}
+
+// The faces of `clean` whose centroid lies within `radius` of one of its sharp edges.
+std::vector<bool> faces_near(const Mesh& clean, const Edge_flags& sharp, double radius)
+{
+  std::vector<std::pair<Point, Point> > segments;
+  for(auto e : edges(clean))
+    if(sharp[e])
+      segments.emplace_back(clean.point(source(halfedge(e, clean), clean)), clean.point(target(halfedge(e, clean), clean)));
+  std::vector<bool> near(num_faces(clean), false);
+  for(auto f : faces(clean))
+  {
+    const auto h = halfedge(f, clean);
+    const Point c = CGAL::centroid(clean.point(source(h, clean)), clean.point(target(h, clean)),
+                                   clean.point(target(next(h, clean), clean)));
+    for(const auto& s : segments)
+      if(segment_distance(c, s.first, s.second) <= radius)
+      {
+        near[f.idx()] = true;
+        break;
+      }
+  }
+  return near;
+}
+
+double normal_error_near(const Mesh& result, const Clean_surface& clean, const std::vector<bool>& near)
+{
+  double sum = 0;
+  std::size_t count = 0;
+  for(auto f : faces(result))
+    if(near[f.idx()])
+    {
+      sum += angle_deg(PMP::compute_face_normal(f, result), clean.normal[f.idx()]);
+      ++count;
+    }
+  return count > 0 ? sum / double(count) : 0;
+}
+
+struct Row
+{
+  Quality q;
+  double near_error = 0, seconds = 0, found = 0, false_share = 0;
+  std::size_t marked = 0;
+};
+
+enum Method { DEFAULT, ACCURATE, FEATURES, GIVEN, METHODS };
+const char* method_name[] = {"default", "accurate objective", "feature_angle", "given sharp edges"};
+
+// One method on `noisy`: the result measured against the clean mesh.
+Row run(Method method, const Mesh& noisy, const Clean_surface& clean, Edge_flags clean_sharp,
+        const std::vector<bool>& near, double eps, double angle, int runs)
+{
+  Row row;
+  Mesh result;
+  PMP::Constrained_fairing_result r;
+  Edge_flags marks;
+  row.seconds = median_seconds(runs, [&] {
+    result = noisy;
+    marks = result.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
+    if(method == GIVEN)
+      for(auto e : edges(result))
+        marks[e] = clean_sharp[e];
+    if(method == DEFAULT)
+      r = PMP::constrained_fairing(result, eps);
+    else if(method == ACCURATE)
+      r = PMP::constrained_fairing(result, eps, CFP::fairing_objective(PMP::Constrained_fairing_objective::ACCURATE));
+    else if(method == FEATURES)
+      r = PMP::constrained_fairing(result, eps, CFP::feature_angle(angle, CGAL::parameters::edge_is_constrained_map(marks)));
+    else
+      r = PMP::constrained_fairing(result, eps, CGAL::parameters::edge_is_constrained_map(marks));
+  });
+  if(!r)
+  {
+    std::cerr << "error: " << r.message << std::endl;
+    std::exit(1);
+  }
+  row.q = measure(result, noisy, clean, eps, r.final_bending_energy);
+  row.near_error = normal_error_near(result, clean, near);
+  row.marked = r.number_of_feature_edges;
+  if(method == FEATURES)
+  {
+    std::size_t sharp = 0, found = 0, wrong = 0;
+    for(auto e : edges(result))
+    {
+      sharp += clean_sharp[e];
+      found += clean_sharp[e] && marks[e];
+      wrong += marks[e] && !clean_sharp[e];
+    }
+    row.found = sharp > 0 ? double(found) / double(sharp) : 1;
+    row.false_share = row.marked > 0 ? double(wrong) / double(row.marked) : 0;
+  }
+  return row;
+}
+
+void print(const std::string& label, const Row& row)
+{
+  std::cout << "  " << std::left << std::setw(20) << label << std::right << std::setprecision(4)
+            << " RMS " << std::setw(9) << row.q.surface_rms << "  normal " << std::setw(6) << row.q.normal_error_deg
+            << " deg  near edges " << std::setw(6) << row.near_error << " deg  min angle " << std::setw(5)
+            << row.q.min_angle_deg << "  folds " << row.q.folds << "  bound " << (row.q.ball_holds ? "exact" : "BROKEN")
+            << "  " << std::setprecision(3) << row.seconds << " s";
+  if(row.marked > 0)
+    std::cout << "  edges " << row.marked;
+  if(row.found > 0)
+    std::cout << "  found " << std::setprecision(3) << 100 * row.found << " %  false " << 100 * row.false_share << " %";
+  std::cout << std::endl;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const Arguments arguments(argc, argv);
+  const Thread_limit threads(arguments);
+  const std::string demo = arguments.option("demo", CONSTRAINED_FAIRING_DEMO_DATA);
+  const double angle = std::stod(arguments.option("angle", "30"));
+  const double target_faces = std::stod(arguments.option("faces", "20000"));
+  const int runs = arguments.runs;
+  std::cout << machine_description() << std::endl;
+  std::cout << "feature_angle(" << angle << "), runs " << runs << " (median time)" << std::endl;
+
+  // ratios of feature_angle to the default call, for the geometric means
+  double log_normal = 0, log_near = 0, log_rms = 0, log_time = 0, log_near_accurate = 0, log_normal_accurate = 0;
+  int cases = 0;
+  for(const std::string name : {"fandisk", "joint", "blade", "part", "dragknob", "anchor", "cube-meshed"})
+  {
+    Mesh coarse;
+    if(!CGAL::IO::read_polygon_mesh(demo + "/" + name + ".off", coarse))
+    {
+      std::cout << name << ": not in " << demo << " (see get_demo_meshes.sh), skipped" << std::endl;
+      continue;
+    }
+    Mesh clean = remeshed(coarse, angle, target_faces);
+    const Edge_flags sharp = sharp_edges(clean, angle, "e:clean_sharp");
+    const double h = mean_edge_length(clean);
+    const Clean_surface surface(clean);
+    const std::vector<bool> near = faces_near(clean, sharp, 2 * h);
+    std::size_t sharp_count = 0;
+    for(auto e : edges(clean))
+      sharp_count += sharp[e];
+    for(double d : {0.25, 0.5})
+    {
+      Mesh noisy = clean;
+      add_noise(noisy, d * h, 1);
+      const double eps = d * h;
+      std::cout << name << ", " << num_faces(clean) << " faces, " << sharp_count << " sharp edges, noise " << d
+                << " h:" << std::endl;
+      Row rows[METHODS];
+      for(int m = 0; m < METHODS; ++m)
+      {
+        rows[m] = run(Method(m), noisy, surface, sharp, near, eps, angle, runs);
+        print(method_name[m], rows[m]);
+      }
+      const Row& base = rows[DEFAULT];
+      const Row& ours = rows[FEATURES];
+      std::cout << "  feature_angle / default: normal " << ours.q.normal_error_deg / base.q.normal_error_deg
+                << ", near edges " << ours.near_error / base.near_error << ", RMS " << ours.q.surface_rms / base.q.surface_rms
+                << ", time " << ours.seconds / base.seconds << std::endl;
+      log_normal += std::log(ours.q.normal_error_deg / base.q.normal_error_deg);
+      log_near += std::log(ours.near_error / base.near_error);
+      log_rms += std::log(ours.q.surface_rms / base.q.surface_rms);
+      log_time += std::log(ours.seconds / base.seconds);
+      log_normal_accurate += std::log(ours.q.normal_error_deg / rows[ACCURATE].q.normal_error_deg);
+      log_near_accurate += std::log(ours.near_error / rows[ACCURATE].near_error);
+      ++cases;
+    }
+  }
+  if(cases > 0)
+    std::cout << "\ngeometric means over " << cases << " cases, feature_angle against the default call: normal error "
+              << std::exp(log_normal / cases) << ", near sharp edges " << std::exp(log_near / cases) << ", RMS "
+              << std::exp(log_rms / cases) << ", time " << std::exp(log_time / cases)
+              << "; against the accurate objective: normal error " << std::exp(log_normal_accurate / cases)
+              << ", near sharp edges " << std::exp(log_near_accurate / cases) << std::endl;
+
+  std::cout << "\norganic meshes, noise 0.25 h:" << std::endl;
+  for(const std::string name : {"bunny00", "elephant"})
+  {
+    Mesh noisy;
+    if(!CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/" + name + ".off", noisy))
+      continue;
+    const double eps = 0.25 * mean_edge_length(noisy);
+    add_noise(noisy, eps, 1);
+    Mesh plain = noisy, featured = noisy;
+    const auto base = PMP::constrained_fairing(plain, eps);
+    const auto ours = PMP::constrained_fairing(featured, eps, CFP::feature_angle(angle));
+    std::cout << "  " << name << ": " << ours.number_of_feature_edges << " of " << num_edges(noisy) << " edges marked ("
+              << 100. * double(ours.number_of_feature_edges) / double(num_edges(noisy)) << " %), energy "
+              << ours.final_bending_energy / base.final_bending_energy << " times the default's" << std::endl;
+  }
+  return 0;
+}

@@ -1,0 +1,214 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Creases kept sharp: on a noisy cube and a noisy closed cylinder, feature_angle(30) finds at
+// least 90 % of the clean mesh's sharp edges, with at most 5 % of what it finds not sharp, and
+// its normals end 4 times closer to the clean ones than those of the call without creases, which
+// rounds them; the edges it found, given in edge_is_constrained_map, give the same result bit for
+// bit, and the map is only read; short curves are dropped from the detection; bad angles are
+// rejected with the mesh and the map untouched.
+
+#include "test_support.h"
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace CFP = PMP::constrained_fairing_parameters;
+namespace CF = PMP::internal::Constrained_fairing;
+using test::Mesh;
+using test::Point;
+using Edge_flags = Mesh::Property_map<Mesh::Edge_index, bool>;
+
+namespace {
+
+// The closed polyhedron `m` triangulated and remeshed to edges of about `length`, its edges
+// sharper than 30 degrees kept; those edges are marked in the returned map.
+Edge_flags remeshed_with_sharp_edges(Mesh& m, double length)
+{
+  PMP::triangulate_faces(m);
+  Edge_flags sharp = m.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+  PMP::detect_sharp_edges(m, 30, sharp);
+  PMP::isotropic_remeshing(faces(m), length, m, CGAL::parameters::number_of_iterations(3).edge_is_constrained_map(sharp));
+  m.collect_garbage();
+  for(auto e : edges(m))
+    sharp[e] = false;
+  PMP::detect_sharp_edges(m, 30, sharp);
+  return sharp;
+}
+
+Mesh cube()
+{
+  Mesh m;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0, 1, 1), Point(0, 0, 1),
+                        Point(1, 0, 1), Point(1, 1, 1), m);
+  return m;
+}
+
+// A closed cylinder of radius 1 and height 2 whose sides are 64 flat facets (5.6 degrees
+// apart, well under the angle): its sharp edges are the rims.
+Mesh cylinder()
+{
+  Mesh m;
+  CGAL::make_regular_prism(64, m, Point(0, 0, 0), 2., 1., true);
+  return m;
+}
+
+double largest_normal_error(const Mesh& result, const Mesh& clean)
+{
+  double largest = 0;
+  for(auto f : faces(clean))
+  {
+    const auto n = PMP::compute_face_normal(f, result), c = PMP::compute_face_normal(f, clean);
+    largest = (std::max)(largest, std::acos((std::min)(1., n * c)) * 180 / CGAL_PI);
+  }
+  return largest;
+}
+
+// The bound as users check it, in double.
+bool ball_holds(const Mesh& result, const Mesh& input, double eps)
+{
+  for(auto v : vertices(result))
+  {
+    const double d2 = CGAL::squared_distance(result.point(v), input.point(v));
+    if(!(d2 <= eps * eps && std::sqrt(d2) <= eps))
+      return false;
+  }
+  return true;
+}
+
+bool same_points(const Mesh& a, const Mesh& b)
+{
+  for(auto v : vertices(a))
+    if(a.point(v) != b.point(v))
+      return false;
+  return true;
+}
+
+double mean_normal_error(const Mesh& result, const Mesh& clean)
+{
+  double sum = 0;
+  for(auto f : faces(clean))
+  {
+    const auto n = PMP::compute_face_normal(f, result), c = PMP::compute_face_normal(f, clean);
+    sum += std::acos((std::min)(1., n * c)) * 180 / CGAL_PI;
+  }
+  return sum / double(num_faces(clean));
+}
+
+void check_creases(Mesh clean, double length, const char* name)
+{
+  const Edge_flags sharp = remeshed_with_sharp_edges(clean, length);
+  std::size_t sharp_count = 0;
+  for(auto e : edges(clean))
+    sharp_count += sharp[e];
+  const double h = Constrained_fairing_front_end::mean_edge_length(clean);
+  Mesh noisy = clean;
+  test::add_noise(noisy, 0.25 * h, 7);
+  const double eps = 0.25 * h;
+
+  // The call without creases rounds them.
+  Mesh rounded = noisy;
+  CHECK(PMP::constrained_fairing(rounded, eps));
+  const double rounded_error = mean_normal_error(rounded, clean);
+
+  // Detected: at least 90 % of the clean sharp edges, at most 5 % of the found edges not sharp,
+  // all of them written in the map; the normals 4 times closer to the clean ones.
+  Mesh detected = noisy;
+  Edge_flags found = detected.add_property_map<Mesh::Edge_index, bool>("e:found", false).first;
+  const auto r = PMP::constrained_fairing(detected, eps, CFP::feature_angle(30., CGAL::parameters::edge_is_constrained_map(found)));
+  CHECK(r);
+  std::size_t found_count = 0, found_sharp = 0;
+  for(auto e : edges(detected))
+  {
+    found_count += found[e];
+    found_sharp += found[e] && sharp[e];
+  }
+  CHECK(r.number_of_feature_edges == found_count);
+  CHECK(double(found_sharp) >= 0.9 * double(sharp_count));
+  CHECK(double(found_count - found_sharp) <= 0.05 * double(found_count));
+  const double error = mean_normal_error(detected, clean);
+  CHECK(error <= 0.25 * rounded_error);
+  CHECK(ball_holds(detected, noisy, eps));
+  std::cout << name << ": " << num_faces(clean) << " faces, " << sharp_count << " sharp edges, " << found_count << " found ("
+            << found_sharp << " sharp); mean normal error " << error << " degrees (" << rounded_error
+            << " without creases), largest " << largest_normal_error(detected, clean) << std::endl;
+
+  // Given: the same creases, the same result bit for bit; the map only read.
+  Mesh given = noisy;
+  Edge_flags marks = given.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
+  for(auto e : edges(given))
+    marks[e] = found[e];
+  const auto g = PMP::constrained_fairing(given, eps, CGAL::parameters::edge_is_constrained_map(marks));
+  CHECK(g && g.number_of_feature_edges == found_count);
+  CHECK(same_points(given, detected));
+  std::size_t unchanged = 0;
+  for(auto e : edges(given))
+    unchanged += marks[e] == found[e];
+  CHECK(unchanged == num_edges(given));
+}
+
+// Spurs and isolated lines of fewer than 8 edges and closed curves of fewer are dropped; longer
+// ones and what joins them stay.
+void check_short_curves()
+{
+  std::vector<std::array<CF::Index, 2> > edges;
+  const auto path = [&edges](CF::Index first, CF::Index count) {
+    for(CF::Index k = 0; k < count; ++k)
+      edges.push_back(CF::sorted_edge(first + k, first + k + 1));
+  };
+  path(0, 20);   // a line of 20 edges: stays
+  path(100, 3);  // a spur of 3 edges off vertex 10: dropped
+  edges.push_back(CF::sorted_edge(10, 100));
+  path(200, 5);  // an isolated line of 6 edges: dropped
+  edges.push_back(CF::sorted_edge(205, 206));
+  path(300, 2);  // a triangle: dropped
+  edges.push_back(CF::sorted_edge(300, 302));
+  path(400, 9);  // a closed curve of 10 edges: stays
+  edges.push_back(CF::sorted_edge(400, 409));
+  std::sort(edges.begin(), edges.end());
+  CF::drop_short_curves(500, edges, CF::Feature_detection::shortest_spur);
+  CHECK(edges.size() == 30);
+  for(const auto& e : edges)
+    CHECK(e[1] <= 20 || (e[0] >= 400 && e[1] < 410));
+}
+
+void check_bad_angles()
+{
+  Mesh clean = cube();
+  remeshed_with_sharp_edges(clean, 0.25);
+  test::add_noise(clean, 0.05, 3);
+  for(double angle : {0., 180., -10., 200., std::numeric_limits<double>::quiet_NaN()})
+  {
+    Mesh m = clean;
+    Edge_flags marks = m.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
+    const auto r = PMP::constrained_fairing(m, 0.05, CFP::feature_angle(angle, CGAL::parameters::edge_is_constrained_map(marks)));
+    CHECK(r.status == PMP::Constrained_fairing_status::INVALID_INPUT);
+    CHECK(r.defect == PMP::Constrained_fairing_defect::INVALID_FEATURE_ANGLE);
+    CHECK(r.message.find("feature_angle") != std::string::npos);
+    CHECK(same_points(m, clean));
+    std::size_t marked = 0;
+    for(auto e : edges(m))
+      marked += marks[e];
+    CHECK(marked == 0);
+  }
+}
+
+} // namespace
+
+int main()
+{
+  check_short_curves();
+  check_bad_angles();
+  check_creases(cube(), 0.08, "cube");
+  check_creases(cylinder(), 0.15, "cylinder");
+  return test::report("test_feature_edges");
+}
