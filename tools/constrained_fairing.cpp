@@ -94,6 +94,10 @@ options:
                            --box and --accurate: a lower bending energy, but farther from the
                            true surface; by default each moves along the normal of the
                            smoothed start only
+  --feature-angle DEG      keep creases sharp: the edges across which the face normals, after a
+                           bilateral filter, are more than DEG degrees apart (0 < DEG < 180;
+                           30 suits machined parts and CAD models) are faired as curves, and
+                           the surface on either side as its own
   --label-format EXT       a label map's surfaces as ply (default), off, obj or stl
   --in-place               let OUT be IN: the result replaces the input once complete
   --help                   this text
@@ -165,7 +169,7 @@ struct Options
   bool box = false, fixed_border = false, accurate = false, tangential_motion = false, in_place = false, help = false;
   std::optional<std::string> eps;
   std::string extents, radius_property, error;
-  std::optional<std::string> label_format;
+  std::optional<std::string> label_format, feature_angle;
 };
 
 Options parse_options(int argc, char* argv[])
@@ -200,6 +204,8 @@ Options parse_options(int argc, char* argv[])
       value(o.radius_property);
     else if(a == "--label-format")
       value(o.label_format.emplace());
+    else if(a == "--feature-angle")
+      value(o.feature_angle.emplace());
     else if(a.size() > 2 && a.compare(0, 2, "--") == 0)
       o.error = "unknown option " + a + " (see --help)";
     else
@@ -280,6 +286,7 @@ struct Asked
   std::optional<Mesh::Property_map<vertex_descriptor, double> > tolerance;
   std::optional<Mesh::Property_map<vertex_descriptor, bool> > fixed;
   std::optional<std::array<double, 3> > extents;
+  std::optional<double> feature_angle;
   bool box = false;
 };
 
@@ -296,22 +303,32 @@ PMP::Constrained_fairing_result fair_with_bound(Mesh& mesh, double epsilon, cons
   return PMP::constrained_fairing(mesh, epsilon, np);
 }
 
-template <typename NamedParameters>
-PMP::Constrained_fairing_result fair_with_fixed(Mesh& mesh, double epsilon, const Asked& asked,
-                                                const NamedParameters& np)
+// next(np), with `value` added to `np` by add(value, np) if it is given: each parameter the user
+// did not ask for is not passed at all.
+template <typename T, typename Add, typename NamedParameters, typename Next>
+PMP::Constrained_fairing_result with_if_given(const std::optional<T>& value, const Add& add,
+                                              const NamedParameters& np, const Next& next)
 {
-  if(asked.fixed)
-    return fair_with_bound(mesh, epsilon, asked, np.vertex_is_constrained_map(*asked.fixed));
-  return fair_with_bound(mesh, epsilon, asked, np);
+  if(value)
+    return next(add(*value, np));
+  return next(np);
 }
 
+// The library's call with the per-vertex maps and the creases asked for, then the bound.
 template <typename NamedParameters>
-PMP::Constrained_fairing_result fair_with_tolerance(Mesh& mesh, double epsilon, const Asked& asked,
-                                                    const NamedParameters& np)
+PMP::Constrained_fairing_result fair_asked(Mesh& mesh, double epsilon, const Asked& asked, const NamedParameters& np)
 {
-  if(asked.tolerance)
-    return fair_with_fixed(mesh, epsilon, asked, CFP::vertex_tolerance_map(*asked.tolerance, np));
-  return fair_with_fixed(mesh, epsilon, asked, np);
+  const auto bound = [&](const auto& with) { return fair_with_bound(mesh, epsilon, asked, with); };
+  const auto creases = [&](const auto& with) {
+    return with_if_given(asked.feature_angle, [](double a, const auto& p) { return CFP::feature_angle(a, p); }, with,
+                         bound);
+  };
+  const auto fixed = [&](const auto& with) {
+    return with_if_given(asked.fixed, [](const auto& map, const auto& p) { return p.vertex_is_constrained_map(map); },
+                         with, creases);
+  };
+  return with_if_given(asked.tolerance, [](const auto& map, const auto& p) { return CFP::vertex_tolerance_map(map, p); },
+                       np, fixed);
 }
 
 // A label map's surfaces: surface nets in the voxels' frame (spacing the lengths of the
@@ -322,7 +339,7 @@ int fair_label_map(const Options& options, const std::string& in)
 {
   namespace FE = Constrained_fairing_front_end;
   if(options.eps || options.box || !options.extents.empty() || !options.radius_property.empty() ||
-     options.fixed_border || options.in_place || options.tangential_motion)
+     options.fixed_border || options.in_place || options.tangential_motion || options.feature_angle)
     return fail("of the options, only --accurate and --label-format apply to a label map");
   const std::string format = options.label_format.value_or("ply");
   if(format != "ply" && format != "off" && format != "obj" && format != "stl")
@@ -439,6 +456,16 @@ int main(int argc, char* argv[])
   const Epsilon_text eps = parse_epsilon(options.eps.value_or(default_epsilon_text));
   if(!eps.error.empty())
     return fail("--eps " + eps.error);
+  // A malformed number is refused here; its range is the library's check.
+  std::optional<double> feature_angle;
+  if(options.feature_angle)
+  {
+    std::istringstream text(*options.feature_angle);
+    double degrees = 0;
+    if(!(text >> degrees) || !text.eof())
+      return fail("--feature-angle must be a number of degrees (got " + *options.feature_angle + ")");
+    feature_angle = degrees;
+  }
   std::array<double, 3> extents{0, 0, 0};
   if(!options.extents.empty() && !parse_extents(options.extents, extents))
     return fail("--box-extents must be three non-negative numbers HX,HY,HZ (got " + options.extents + ")");
@@ -479,6 +506,7 @@ int main(int argc, char* argv[])
   // Only what the user asked for is passed: the plain call takes the library's own defaults.
   Asked asked;
   asked.box = options.box;
+  asked.feature_angle = feature_angle;
   if(!options.extents.empty())
     asked.extents = extents;
   if(!options.radius_property.empty())
@@ -497,7 +525,7 @@ int main(int argc, char* argv[])
   auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
   Progress progress;
   const bool box = options.box || !options.extents.empty();
-  const PMP::Constrained_fairing_result result = fair_with_tolerance(
+  const PMP::Constrained_fairing_result result = fair_asked(
     mesh, epsilon, asked,
     CFP::iteration_callback(
       std::ref(progress),
@@ -540,7 +568,8 @@ int main(int argc, char* argv[])
             << (box ? "box" + (options.extents.empty() ? std::string() : " " + options.extents) : std::string("ball"))
             << (options.radius_property.empty() ? "" : ", tolerance from " + options.radius_property)
             << (options.fixed_border ? ", border fixed" : "") << (options.accurate ? ", accurate" : "")
-            << (options.tangential_motion ? ", tangential motion" : "") << "; "
+            << (options.tangential_motion ? ", tangential motion" : "")
+            << (options.feature_angle ? ", creases over " + *options.feature_angle + " degrees" : "") << "; "
             << result.number_of_iterations << " iterations ("
             << (result.status == PMP::Constrained_fairing_status::CONVERGED ? "converged" : "iteration limit")
             << "); bending energy " << result.initial_bending_energy << " -> " << result.final_bending_energy;
@@ -551,6 +580,8 @@ int main(int argc, char* argv[])
   if(result.number_of_unfolded_faces > 0 || result.number_of_folded_faces > 0)
     std::cout << ", " << result.number_of_unfolded_faces << " faces unfolded, " << result.number_of_folded_faces
               << " left folded";
+  if(options.feature_angle)
+    std::cout << ", " << result.number_of_feature_edges << " crease edges";
   if(result.number_of_degenerate_edges > 0)
     std::cout << ", " << result.number_of_degenerate_edges << " edges with a degenerate triangle left out";
   std::cout << "; " << std::setprecision(3) << progress.seconds() << " s" << std::endl;

@@ -8,7 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
-from ._arrays import (choice_argument, count_argument, faces_array, flag_argument, indices_array,
+from ._arrays import (_as_array, choice_argument, count_argument, faces_array, flag_argument, indices_array,
                       invalid, number_argument, numbers_array, selection_array, vertices_array)
 from ._errors import Defect, InputError
 from ._report import Report, Status
@@ -26,6 +26,7 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
          tolerance: Optional[ArrayLike] = None,
          fixed: Optional[ArrayLike] = None,
          region: Optional[ArrayLike] = None,
+         feature_edges: Optional[ArrayLike] = None,
          objective: Optional[str] = None,
          fidelity_weight: Optional[float] = None,
          method: Optional[str] = None,
@@ -83,6 +84,9 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
     region : array_like, optional
         Fair only these faces (a boolean mask of shape ``(m,)`` or face indices, each listed
         once): only vertices whose faces all lie in the region move, so its border stays.
+    feature_edges : array_like, shape (k, 2), optional
+        Creases given as pairs of vertex indices, each an edge of the mesh (any integer dtype):
+        kept sharp as those `feature_angle` detects, which are added to them.
     objective : {None, "fairest", "accurate"}
         ``"fairest"`` (the default) minimizes the bending energy alone: the fairest surface within the bound.
         ``"accurate"`` adds a fidelity term towards a denoised copy of the input: closer to the
@@ -117,7 +121,8 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         Keep creases sharp: the edges across which the bilaterally filtered face normals are more
         than this many degrees apart (strictly between 0 and 180) are detected as creases; the
         energy has no hinge across them, and the curves they form are faired as curves within the
-        same bound. Unset, no edge is a crease. ``report.number_of_feature_edges`` counts them.
+        same bound. Unset, only `feature_edges` are creases. ``report.feature_edges`` lists the
+        creases used.
     initial_smoothing_steps : int, optional
         Steps of bounded Taubin smoothing that make the starting point (default 16 for the
         default method, 0 for the paper's methods).
@@ -191,10 +196,12 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
     if region is not None:
         region = _region_indices(region, F.shape[0])
+    if feature_edges is not None:
+        feature_edges = _edge_pairs(feature_edges, F, n)
 
     with _Progress(progress, options) as callback:
         outcome = _core.fair(V, F, options, tolerance, fixed, box_half_extents, box_centers,
-                             region, callback)
+                             region, feature_edges, callback)
     return result_of(outcome)
 
 
@@ -247,6 +254,26 @@ def result_of(outcome):
     fields["status"] = Status(status)
     fields["defect"] = Defect.NONE
     return outcome["vertices"], Report(**fields)
+
+
+def _edge_pairs(value, F, n):
+    """``(k, 2)`` int64 vertex pairs, each an edge of the triangles `F` on `n` vertices."""
+    A = _as_array(value, "feature_edges")
+    if A.size == 0:
+        return np.zeros((0, 2), dtype=np.int64)
+    if A.ndim != 2 or A.shape[1] != 2 or A.dtype.kind not in "iu":
+        raise invalid(f"feature_edges must be a (k, 2) array of vertex indices "
+                      f"(got shape {A.shape}, dtype {A.dtype})")
+    bad = (A < 0) | (A >= n)
+    if bad.any():
+        raise invalid(f"feature_edges holds vertex index {A[bad][0]}, but there are {n}")
+    sides = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    pairs = np.sort(A.astype(np.int64), axis=1)
+    known = np.isin(pairs[:, 0] * n + pairs[:, 1], sides[:, 0] * n + sides[:, 1])
+    if not known.all():
+        k = int(np.flatnonzero(~known)[0])
+        raise invalid(f"feature_edges[{k}] = ({A[k, 0]}, {A[k, 1]}) is not an edge of the mesh")
+    return np.ascontiguousarray(A, dtype=np.int64)
 
 
 def _region_indices(region, m):

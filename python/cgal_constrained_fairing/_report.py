@@ -59,8 +59,11 @@ class Report:
     number_of_unfolded_faces : int
         Folded faces that the fold repair undid.
     number_of_feature_edges : int
-        Edges kept as creases (those ``feature_angle`` detected), across which the energy has no
-        hinge.
+        Edges kept as creases (given in ``feature_edges`` or detected by ``feature_angle``),
+        across which the energy has no hinge.
+    feature_edges : numpy.ndarray
+        ``(k, 2)`` int64: those edges as vertex pairs, the smaller index first, in increasing
+        order (empty for label maps).
     number_of_degenerate_edges : int
         Interior edges left out of the energy because a triangle of theirs is degenerate in
         the input.
@@ -87,6 +90,7 @@ class Report:
     number_of_unfolded_faces: int
     number_of_feature_edges: int
     number_of_degenerate_edges: int
+    feature_edges: np.ndarray
     deviation: np.ndarray
     at_bound: np.ndarray
 

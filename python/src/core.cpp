@@ -250,6 +250,7 @@ py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_ar
   report["number_of_unfolded_faces"] = result.number_of_unfolded_faces;
   report["number_of_feature_edges"] = result.number_of_feature_edges;
   report["number_of_degenerate_edges"] = result.number_of_degenerate_edges;
+  report["feature_edges"] = Index_array(std::vector<py::ssize_t>{0, 2});
   if(result)
   {
     report["vertices"] = out;
@@ -267,9 +268,11 @@ py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_ar
 py::dict fair(const Float_array& vertices, const Index_array& faces, const Options& options,
               const std::optional<Float_array>& tolerance, const std::optional<Mask_array>& fixed,
               const std::optional<Float_array>& box_half_extents, const std::optional<Float_array>& box_centers,
-              const std::optional<Index_array>& region, py::object progress)
+              const std::optional<Index_array>& region, const std::optional<Index_array>& feature_edges,
+              py::object progress)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
+  std::vector<std::array<std::int64_t, 2> > creases; // those used, each as (smaller, larger)
   const bool box_arrays = box_half_extents || box_centers;
   const bool box = options.bound == "box" || (options.bound.empty() && box_arrays);
   Python_callback callback(std::move(progress));
@@ -302,6 +305,16 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
     }
     else
     {
+      // The creases the user gives, each an edge (the Python layer checked), the detected ones
+      // added by the call.
+      auto crease_map = mesh.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
+      if(feature_edges)
+        for(py::ssize_t k = 0; k < feature_edges->shape(0); ++k)
+        {
+          const std::int64_t* e = feature_edges->data() + 2 * k;
+          const auto h = CGAL::halfedge(vertex_descriptor(Mesh::size_type(e[0])), vertex_descriptor(Mesh::size_type(e[1])), mesh);
+          crease_map[CGAL::edge(h.first, mesh)] = true;
+        }
       std::vector<face_descriptor> region_faces;
       if(region)
         for(py::ssize_t k = 0; k < region->shape(0); ++k)
@@ -314,7 +327,8 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
                                    CFP::iteration_callback(std::ref(callback),
                                                            CGAL::parameters::vertex_is_constrained_map(
                                                              Row_map<bool, 1, bool>{fixed ? fixed->data()
-                                                                                          : none_fixed.get()})))));
+                                                                                          : none_fixed.get()})
+                                                             .edge_is_constrained_map(crease_map)))));
       const auto fair_with = [&](const auto& parameters) {
         const auto all = with_settings(settings, parameters);
         return region ? PMP::constrained_fairing(region_faces, mesh, options.epsilon, all)
@@ -346,11 +360,26 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
         row[1] = q.y();
         row[2] = q.z();
       }
+      for(auto e : mesh.edges())
+        if(crease_map[e])
+        {
+          const std::int64_t a = mesh.source(mesh.halfedge(e)).idx(), b = mesh.target(mesh.halfedge(e)).idx();
+          creases.push_back({(std::min)(a, b), (std::max)(a, b)});
+        }
+      std::sort(creases.begin(), creases.end());
     }
   }
   callback.raise_pending();
 
-  return report_of(result, out, deviation, at_bound);
+  py::dict report = report_of(result, out, deviation, at_bound);
+  if(result)
+  {
+    Index_array used({py::ssize_t(creases.size()), py::ssize_t(2)});
+    for(std::size_t k = 0; k < creases.size(); ++k)
+      std::copy(creases[k].begin(), creases[k].end(), used.mutable_data() + 2 * k);
+    report["feature_edges"] = used;
+  }
+  return report;
 }
 
 using Label = std::int64_t;
@@ -634,7 +663,8 @@ PYBIND11_MODULE(_core, m)
     .def("max_iterations", [](const Options& options) { return options.settings().options.max_iterations; });
 
   m.def("fair", &fair, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("tolerance"),
-        py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("progress"));
+        py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("feature_edges"),
+        py::arg("progress"));
   m.def(
     "mean_edge_length",
     [](const Float_array& vertices, const Index_array& faces) {

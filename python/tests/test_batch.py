@@ -314,6 +314,17 @@ def test_command_line(client, tmp_path):
     assert not (tmp_path / "elsewhere").exists()
 
 
+def test_command_line_feature_angle(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:1], bad=False)
+    out_dir = tmp_path / "out"
+    done = run_cli(str(paths[0]), "-o", str(out_dir), "--scheduler", client.scheduler.address,
+                   "--feature-angle", "30")
+    assert done.returncode == 0, done.stderr
+    V, F = cf.read_mesh(paths[0])
+    W, _ = cf.fair(V, F, 0.25 * cf.mean_edge_length(V, F), feature_angle=30)
+    assert np.array_equal(cf.read_mesh(out_dir / paths[0].name)[0], W)
+
+
 def test_threads_limit_the_library_in_each_worker(client, tmp_path):
     paths = copy_inputs(tmp_path / "in", good=GOOD[:2], bad=False)
     rows = fair_files(paths, tmp_path / "out", client, threads=1, progress=False)

@@ -538,7 +538,8 @@ def cpp_program(variable):
 
 @pytest.mark.parametrize("name,options", [("head.off", []), ("elephant_noisy.off", ["--accurate"]),
                                           ("elephant_noisy.off", ["--box"]),
-                                          ("head.off", ["--tangential-motion"])])
+                                          ("head.off", ["--tangential-motion"]),
+                                          ("head.off", ["--feature-angle", "30"])])
 def test_identical_to_the_command_line_tool(tmp_path, name, options):
     tool = cpp_program("CONSTRAINED_FAIRING_TOOL")
     out = tmp_path / "faired.off"
@@ -548,10 +549,47 @@ def test_identical_to_the_command_line_tool(tmp_path, name, options):
     W, _ = cf.fair(V, F, 0.25 * cf.mean_edge_length(V, F),
                    objective="accurate" if "--accurate" in options else "fairest",
                    bound="box" if "--box" in options else None,
-                   tangential_motion=True if "--tangential-motion" in options else None)
+                   tangential_motion=True if "--tangential-motion" in options else None,
+                   feature_angle=30 if "--feature-angle" in options else None)
     W_tool, F_tool = cf.read_mesh(out)
     assert np.array_equal(F_tool, F)
     assert np.array_equal(W_tool, W)
+
+
+def test_creases_detected_and_given_are_the_same_call(elephant):
+    V, F = elephant
+    eps = 0.25 * cf.mean_edge_length(V, F)
+    W, report = cf.fair(V, F, eps, feature_angle=30)
+    E = report.feature_edges
+    assert E.dtype == np.int64 and E.shape == (report.number_of_feature_edges, 2) and len(E) > 0
+    assert (E[:, 0] < E[:, 1]).all() and (np.diff(E[:, 0] * len(V) + E[:, 1]) > 0).all()
+    # the creases found, given back, are the same call, bit for bit
+    W_given, given = cf.fair(V, F, eps, feature_edges=E[:, ::-1])
+    assert np.array_equal(W_given, W) and np.array_equal(given.feature_edges, E)
+    _, plain = cf.fair(V, F, eps)
+    assert plain.number_of_feature_edges == 0 and plain.feature_edges.shape == (0, 2)
+
+
+@pytest.mark.parametrize("feature_edges,what", [
+    ([[0, 3]], r"feature_edges\[0\] = \(0, 3\) is not an edge of the mesh"),
+    ([[0, 1], [0, 9]], "feature_edges holds vertex index 9, but there are 4"),
+    ([0, 1], r"feature_edges must be a \(k, 2\) array of vertex indices"),
+    ([[0.0, 1.0]], r"feature_edges must be a \(k, 2\) array of vertex indices"),
+])
+def test_feature_edge_errors(feature_edges, what):
+    F = np.array([[0, 1, 2], [1, 3, 2]])
+    before = SQUARE.copy()
+    with pytest.raises(ValueError, match=what) as error:
+        cf.fair(SQUARE, F, 0.1, feature_edges=feature_edges)
+    assert error.value.defect is cf.Defect.INVALID_ARGUMENT
+    assert np.array_equal(SQUARE, before)
+
+
+@pytest.mark.parametrize("angle", [0, 180, -5, float("nan")])
+def test_feature_angle_out_of_range(angle):
+    with pytest.raises(ValueError, match="feature_angle must be a number of degrees") as error:
+        cf.fair(SQUARE, [[0, 1, 2], [1, 3, 2]], 0.1, feature_angle=angle)
+    assert error.value.defect is cf.Defect.INVALID_FEATURE_ANGLE
 
 
 def test_identical_to_the_default_cpp_call(tmp_path):

@@ -47,6 +47,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--accurate", action="store_true",
                         help="fair towards a denoised copy of each input (objective "
                              "'accurate'): closer to the true surface of a noisy scan")
+    parser.add_argument("--feature-angle", type=float, metavar="DEG",
+                        help="keep creases sharp: the edges across which the filtered face "
+                             "normals are more than DEG degrees apart (mesh files only)")
     where = parser.add_mutually_exclusive_group()
     where.add_argument("--workers", type=int, metavar="N",
                        help="worker processes on this machine (default: one per core)")
@@ -65,6 +68,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         parser.error(f"--threads must be at least 1 (got {args.threads})")
 
     options = {"objective": "accurate"} if args.accurate else {}
+    if args.feature_angle is not None:
+        options["feature_angle"] = args.feature_angle
     try:
         batch = Batch(args.inputs, args.out_dir, args.eps, args.force, options,
                       args.label_format)
