@@ -5,7 +5,7 @@
 // least 90 % of the clean mesh's sharp edges, with at most 5 % of what it finds not sharp, and
 // its normals end 4 times closer to the clean ones than those of the call without creases, which
 // rounds them; the edges it found, given in edge_is_constrained_map, give the same result bit for
-// bit, and the map is only read; short curves are dropped from the detection; bad angles are
+// bit, and the map is not written without the angle; short curves are dropped from the detection; bad angles are
 // rejected with the mesh and the map untouched.
 
 #include "test_support.h"
@@ -17,8 +17,12 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <iostream>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -142,7 +146,8 @@ void check_creases(Mesh clean, double length, const char* name)
             << found_sharp << " sharp); mean normal error " << error << " degrees (" << rounded_error
             << " without creases), largest " << largest_normal_error(detected, clean) << std::endl;
 
-  // Given: the same creases, the same result bit for bit; the map only read.
+  // Given: the same creases, the same result bit for bit; without the angle the map is not
+  // written.
   Mesh given = noisy;
   Edge_flags marks = given.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
   for(auto e : edges(given))
@@ -156,8 +161,8 @@ void check_creases(Mesh clean, double length, const char* name)
   CHECK(unchanged == num_edges(given));
 }
 
-// Spurs and isolated lines of fewer than 8 edges and closed curves of fewer are dropped; longer
-// ones and what joins them stay.
+// Spurs and isolated lines of fewer than 8 edges, closed curves and clusters of fewer are
+// dropped; longer ones and what joins them stay.
 void check_short_curves()
 {
   std::vector<std::array<CF::Index, 2> > edges;
@@ -174,8 +179,12 @@ void check_short_curves()
   edges.push_back(CF::sorted_edge(300, 302));
   path(400, 9);  // a closed curve of 10 edges: stays
   edges.push_back(CF::sorted_edge(400, 409));
+  path(600, 2);  // a diamond of 5 edges, two vertices of degree 3: dropped
+  for(CF::Index v : {600, 602})
+    edges.push_back(CF::sorted_edge(v, 603));
+  edges.push_back(CF::sorted_edge(600, 602));
   std::sort(edges.begin(), edges.end());
-  CF::drop_short_curves(500, edges, CF::Feature_detection::shortest_spur);
+  CF::drop_short_curves(edges, CF::Feature_detection::shortest_spur);
   CHECK(edges.size() == 30);
   for(const auto& e : edges)
     CHECK(e[1] <= 20 || (e[0] >= 400 && e[1] < 410));

@@ -8,8 +8,9 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
-from ._arrays import (_as_array, choice_argument, count_argument, faces_array, flag_argument, indices_array,
-                      invalid, number_argument, numbers_array, selection_array, vertices_array)
+from ._arrays import (_as_array, choice_argument, count_argument, faces_array, flag_argument,
+                      indices_array, invalid, number_argument, numbers_array, selection_array,
+                      vertices_array)
 from ._errors import Defect, InputError
 from ._report import Report, Status
 
@@ -85,8 +86,8 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         Fair only these faces (a boolean mask of shape ``(m,)`` or face indices, each listed
         once): only vertices whose faces all lie in the region move, so its border stays.
     feature_edges : array_like, shape (k, 2), optional
-        Creases given as pairs of vertex indices, each an edge of the mesh (any integer dtype):
-        kept sharp as those `feature_angle` detects, which are added to them.
+        Creases to keep sharp, as pairs of vertex indices (any integer dtype), each an edge of
+        the mesh; those `feature_angle` detects are added to them.
     objective : {None, "fairest", "accurate"}
         ``"fairest"`` (the default) minimizes the bending energy alone: the fairest surface within the bound.
         ``"accurate"`` adds a fidelity term towards a denoised copy of the input: closer to the
@@ -266,7 +267,7 @@ def _edge_pairs(value, F, n):
                       f"(got shape {A.shape}, dtype {A.dtype})")
     bad = (A < 0) | (A >= n)
     if bad.any():
-        raise invalid(f"feature_edges holds vertex index {A[bad][0]}, but there are {n}")
+        raise invalid(f"feature_edges holds vertex index {A[bad][0]}, but there are {n} vertices")
     sides = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
     pairs = np.sort(A.astype(np.int64), axis=1)
     known = np.isin(pairs[:, 0] * n + pairs[:, 1], sides[:, 0] * n + sides[:, 1])

@@ -305,15 +305,19 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
     }
     else
     {
-      // The creases the user gives, each an edge (the Python layer checked), the detected ones
-      // added by the call.
+      // The creases the user gives, each an edge (the Python layer checked; a pair that is not
+      // is left out), the detected ones added by the call.
       auto crease_map = mesh.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
       if(feature_edges)
         for(py::ssize_t k = 0; k < feature_edges->shape(0); ++k)
         {
           const std::int64_t* e = feature_edges->data() + 2 * k;
-          const auto h = CGAL::halfedge(vertex_descriptor(Mesh::size_type(e[0])), vertex_descriptor(Mesh::size_type(e[1])), mesh);
-          crease_map[CGAL::edge(h.first, mesh)] = true;
+          if(e[0] < 0 || e[1] < 0 || std::size_t(e[0]) >= n || std::size_t(e[1]) >= n)
+            continue;
+          const auto h = CGAL::halfedge(vertex_descriptor(Mesh::size_type(e[0])),
+                                        vertex_descriptor(Mesh::size_type(e[1])), mesh);
+          if(h.second)
+            crease_map[CGAL::edge(h.first, mesh)] = true;
         }
       std::vector<face_descriptor> region_faces;
       if(region)

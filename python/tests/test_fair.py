@@ -572,7 +572,7 @@ def test_creases_detected_and_given_are_the_same_call(elephant):
 
 @pytest.mark.parametrize("feature_edges,what", [
     ([[0, 3]], r"feature_edges\[0\] = \(0, 3\) is not an edge of the mesh"),
-    ([[0, 1], [0, 9]], "feature_edges holds vertex index 9, but there are 4"),
+    ([[0, 1], [0, 9]], "feature_edges holds vertex index 9, but there are 4 vertices"),
     ([0, 1], r"feature_edges must be a \(k, 2\) array of vertex indices"),
     ([[0.0, 1.0]], r"feature_edges must be a \(k, 2\) array of vertex indices"),
 ])

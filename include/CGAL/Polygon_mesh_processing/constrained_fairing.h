@@ -69,7 +69,7 @@ and better triangles, in about 100 iterations at every size where sliding took 2
 (see the user manual). With the box bound (voxel cells, whose terraces the vertices must slide
 off), the accurate objective and the paper's methods the vertices slide; `tangential_motion`
 chooses either way.
-Vertices with no normal (at triangles folded in the smoothed start) slide in any case.
+Vertices with no normal (at triangles folded in the smoothed start, on creases) slide in any case.
 
 <b>Slivers.</b> A hinge of the bending energy costs less the shorter its edge and the flatter
 its triangles, so the energy alone ends with needles and caps of angles near 0 degrees. A
@@ -87,12 +87,14 @@ second-difference term per point on exactly two of them), and their points slide
 balls, as they have no surface normal; a point on one crease edge or on three or more (an end, a
 corner) is faired by its surfaces alone. The detection compares the face normals after a
 bilateral filter, which averages the noise on each side of a crease and leaves the two sides
-apart, and drops the curves that end freely after fewer than 8 edges (spurs, isolated edges) and
-closed ones of fewer edges. On six noisy CAD parts of CGAL's demo data (`benchmark/fairing_features`,
-noise and `epsilon` 0.25 times the mean edge length) `feature_angle(30)` finds 93 to 100 % of
-their edges sharper than 30 degrees, at most 1 % of what it finds is not sharp, and its mean
-normal error is 0.08 to 0.42 times the default call's; on a thin turbine blade it finds 59 %,
-and at twice the noise it marks 22 to 33 % false edges (see the user manual).
+apart: an edge is a crease where they are more than the angle apart and more than 1.5 times the
+smaller angle across each face's other edges; curves that end freely after fewer than 8 edges,
+and closed curves and clusters of fewer, are dropped. On six noisy CAD parts of CGAL's demo data
+(`benchmark/fairing_features`, noise and `epsilon` 0.25 times the mean edge length)
+`feature_angle(30)` finds 93 to 100 % of their edges sharper than 30 degrees, at most 1 % of what
+it finds is not sharp, and its mean normal error is 0.08 to 0.42 times the default call's; on a
+thin turbine blade it finds 46 %, and at twice the noise 9 to 27 % of what it marks is not sharp
+(see the user manual).
 
 <b>Tolerances.</b> `epsilon` is the tolerance of every vertex and caps all the others:
 - `vertex_tolerance_map` gives each vertex its own tolerance `t(v)`, and the vertex then stays
@@ -288,9 +290,11 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
     \cgalParamDefault{`false` with `QUASI_NEWTON`, the ball bound and `Constrained_fairing_objective::FAIREST`, `true` otherwise}
   \cgalParamNEnd
   \cgalParamNBegin{edge_is_constrained_map}
-    \cgalParamDescription{a property map from edges to `bool`: the edges marked `true` are
-                          creases, kept sharp (see "Creases" above); with `feature_angle`, the
-                          edges it detects are also set to `true` in it if it is writable}
+    \cgalParamDescription{a property map from edges to `bool`: the edges between two faces
+                          marked `true` are creases, kept sharp (see "Creases" above); with
+                          `feature_angle`, the edges it detects are also set to `true` in it if
+                          it is writable, once the call succeeded. With a face range, a crease's
+                          curve ends where it leaves the faces that take part}
     \cgalParamType{a class model of `ReadablePropertyMap` with
                    `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool`
                    as value type}

@@ -126,8 +126,8 @@ private:
   }
 
   // Each vertex's unit normal at X; none (it moves freely) where the input has no surface
-  // normal (a label map's junction lines), where the normal vanishes, and at the triangles
-  // folded at X, which no motion along the normals would unfold.
+  // normal (a mesh's creases, a label map's junction lines), where the normal vanishes, and at
+  // the triangles folded at X, which no motion along the normals would unfold.
   Points normal_directions(const Points& X) const
   {
     Points N = vertex_normals(m_mesh, X);

@@ -23,6 +23,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Vertex_maps.h>
 
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/number_utils.h>
@@ -111,9 +112,11 @@ public:
   }
 
   // With a face range, a hinge counts when one of its four vertices moves. No hinge crosses a
-  // crease: one the user marks, or one detected at the input points X0 with the settings'
-  // feature angle.
-  Hinge_mesh hinges(const Part& part, const std::vector<bool>& moving, const Points& X0, const Fairing_settings& settings)
+  // crease: an edge between two triangles that the user marks, or one detected at the input
+  // points X0 with the settings' feature angle. With a face range, a crease's curve ends where it
+  // leaves the part's triangles.
+  Hinge_mesh hinges(const Part& part, const std::vector<bool>& moving, const Points& X0,
+                    const Fairing_settings& settings)
   {
     Hinge_mesh mesh = m_region ? Hinge_mesh(m_tmesh, part.triangles(), part.size(), m_vertex_index,
                                             [&](const std::array<Index, 4>& v) {
@@ -123,13 +126,13 @@ public:
     m_part = &part;
     if constexpr(is_given_map<FeatureEdgeMap>)
       for_each_edge_of_part([&](auto e, Index a, Index b) {
-        if(get(m_feature_edge_map, e))
+        if(!is_border(e, m_tmesh) && get(m_feature_edge_map, e))
           m_feature_edges.push_back(sorted_edge(a, b));
       });
     if(settings.feature_angle)
     {
-      const auto detected = detect_feature_edges(mesh, X0, *settings.feature_angle);
-      m_feature_edges.insert(m_feature_edges.end(), detected.begin(), detected.end());
+      m_detected_edges = detect_feature_edges(mesh, X0, *settings.feature_angle);
+      m_feature_edges.insert(m_feature_edges.end(), m_detected_edges.begin(), m_detected_edges.end());
     }
     std::sort(m_feature_edges.begin(), m_feature_edges.end());
     m_feature_edges.erase(std::unique(m_feature_edges.begin(), m_feature_edges.end()), m_feature_edges.end());
@@ -170,9 +173,9 @@ public:
   void clear_outputs(const VertexMaps& maps) const
   {
     if constexpr(is_writable_map<FeatureEdgeMap>)
-      if(!m_feature_edges.empty())
+      if(!m_detected_edges.empty())
         for_each_edge_of_part([&](auto e, Index a, Index b) {
-          if(std::binary_search(m_feature_edges.begin(), m_feature_edges.end(), sorted_edge(a, b)))
+          if(std::binary_search(m_detected_edges.begin(), m_detected_edges.end(), sorted_edge(a, b)))
             put(m_feature_edge_map, e, true);
         });
     if(!m_region)
@@ -200,8 +203,8 @@ private:
       for(auto e : edges(m_tmesh))
         visit(halfedge(e, m_tmesh));
     else
-      for(auto face : m_part->triangles())
-        for(auto h : halfedges_around_face(halfedge(face, m_tmesh), m_tmesh))
+      for(auto f : m_part->triangles())
+        for(auto h : halfedges_around_face(halfedge(f, m_tmesh), m_tmesh))
           visit(h);
   }
 
@@ -212,7 +215,8 @@ private:
   std::optional<Number_map> m_user_number; // each vertex's position in vertices(tmesh), until the part
   Number_map m_vertex_index;               // each vertex's place in the solver's order, from the order phase on
   const Part* m_part = nullptr;            // the driver's, from the hinges on
-  std::vector<std::array<Index, 2> > m_feature_edges; // the creases, sorted, from the hinges on
+  std::vector<std::array<Index, 2> > m_feature_edges;  // the creases, sorted, from the hinges on
+  std::vector<std::array<Index, 2> > m_detected_edges; // those the feature angle found, sorted
   Curve_network m_creases;                 // the hinge mesh's, for the sliding points and the curves' term
   std::optional<Curve_bending> m_curves;
 };

@@ -5,13 +5,16 @@
 // feature edges form curves (Curve_network.h) faired as curves (Curve_bending.h).
 //
 // Detection, where the user gives an angle: a hinge is a crease when the bilaterally filtered
-// normals of its two faces (Normal_filter.h) are more than the angle apart; then the curves that
+// normals of its two faces (Normal_filter.h) are more than the angle apart, and more than
+// `jump_ratio` times the smaller angle across each face's other hinges; then the curves that
 // end freely after fewer than `shortest_spur` edges (spurs off a crease, isolated edges) and the
 // closed curves of fewer edges are dropped, until none is left. Why filtered normals: the
 // dihedral angles of a noisy mesh scatter by tens of degrees (0.25 times the edge length of
 // noise turns a face by about 20 degrees), so a dihedral test on the input marks noise and
 // misses creases alike; the filter averages the normals on each side of a crease and leaves the
-// two sides apart.
+// two sides apart. Why a jump: a crease turns the surface across one edge, while a smooth bend
+// of a coarse mesh, or what noise the filter left, turns it alike across the faces' other edges
+// (measured in doc/design_notes.md, "Creases").
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
@@ -19,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -38,52 +42,88 @@ struct Feature_detection
   static constexpr std::size_t filter_steps = 10;
   static constexpr double normal_difference_sigma = 0.4;
   static constexpr std::size_t shortest_spur = 8;
+  static constexpr double jump_ratio = 1.5;
 };
 
 // An edge as its two vertices, the smaller first.
-inline std::array<Index, 2> sorted_edge(Index a, Index b) { return a < b ? std::array<Index, 2>{a, b} : std::array<Index, 2>{b, a}; }
+inline std::array<Index, 2> sorted_edge(Index a, Index b)
+{
+  return a < b ? std::array<Index, 2>{a, b} : std::array<Index, 2>{b, a};
+}
 
 // Drops the curves of `edges` (sorted, each once) that end freely after fewer than `shortest`
-// edges, and the closed curves of fewer, until none is left.
-inline void drop_short_curves(std::size_t n, std::vector<std::array<Index, 2> >& edges, std::size_t shortest)
+// edges, the closed curves of fewer, and the clusters of fewer edges however joined, until none
+// is left.
+inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::size_t shortest)
 {
-  for(bool dropped = true; dropped;)
+  for(bool dropped = true; dropped && !edges.empty();)
   {
     dropped = false;
-    std::vector<std::vector<std::size_t> > around(n); // edges by vertex
-    for(std::size_t e = 0; e < edges.size(); ++e)
-      for(Index v : edges[e])
-        around[v].push_back(e);
+    // The edges' vertices, numbered 0 to m - 1 in increasing order, and the edges around each.
+    std::vector<Index> vertex;
+    for(const auto& e : edges)
+      vertex.insert(vertex.end(), e.begin(), e.end());
+    std::sort(vertex.begin(), vertex.end());
+    vertex.erase(std::unique(vertex.begin(), vertex.end()), vertex.end());
+    const auto local = [&vertex](Index v) {
+      return std::size_t(std::lower_bound(vertex.begin(), vertex.end(), v) - vertex.begin());
+    };
+    const Rows_by_vertex<std::size_t> around(vertex.size(), [&](const auto& add) {
+      for(std::size_t e = 0; e < edges.size(); ++e)
+        for(Index v : edges[e])
+          add(local(v), e);
+    });
+    const auto degree = [&around](std::size_t v) { return std::size_t(around.end(v) - around.begin(v)); };
+    const auto other = [&](std::size_t e, std::size_t v) { return local(edges[e][0]) == v ? local(edges[e][1]) : local(edges[e][0]); };
     std::vector<bool> drop(edges.size(), false), seen(edges.size(), false);
     // From vertex v along edge e, through the vertices on two edges: the edges passed, and
     // whether the walk came back to where it started.
-    const auto walk = [&](Index v, std::size_t e, std::vector<std::size_t>& path) {
+    std::vector<std::size_t> path;
+    const auto walk = [&](std::size_t v, std::size_t e) {
       path.clear();
-      const Index start = v;
+      const std::size_t start = v;
       for(;;)
       {
         path.push_back(e);
         seen[e] = true;
-        v = edges[e][0] == v ? edges[e][1] : edges[e][0];
-        if(v == start || around[v].size() != 2)
+        v = other(e, v);
+        if(v == start || degree(v) != 2)
           return v == start;
-        e = around[v][0] == e ? around[v][1] : around[v][0];
+        e = around.begin(v)[0] == e ? around.begin(v)[1] : around.begin(v)[0];
       }
     };
-    std::vector<std::size_t> path;
-    for(std::size_t v = 0; v < n; ++v)
-      if(around[v].size() == 1 && !seen[around[v][0]])
+    const auto drop_path = [&]() {
+      if(path.size() < shortest)
+        for(std::size_t e : path)
+          drop[e] = true;
+    };
+    for(std::size_t v = 0; v < vertex.size(); ++v)
+      if(degree(v) == 1 && !seen[around.begin(v)[0]])
       {
-        walk(Index(v), around[v][0], path);
-        if(path.size() < shortest)
-          for(std::size_t e : path)
-            drop[e] = true;
+        walk(v, around.begin(v)[0]);
+        drop_path();
       }
     for(std::size_t e = 0; e < edges.size(); ++e)
-      if(!seen[e] && around[edges[e][0]].size() == 2 && around[edges[e][1]].size() == 2)
-        if(walk(edges[e][0], e, path) && path.size() < shortest)
-          for(std::size_t f : path)
-            drop[f] = true;
+      if(!seen[e] && degree(local(edges[e][0])) == 2 && degree(local(edges[e][1])) == 2 && walk(local(edges[e][0]), e))
+        drop_path();
+    // the clusters, by a search over the edges
+    std::vector<bool> reached(edges.size(), false);
+    for(std::size_t first = 0; first < edges.size(); ++first)
+    {
+      if(reached[first])
+        continue;
+      path.assign(1, first);
+      reached[first] = true;
+      for(std::size_t k = 0; k < path.size(); ++k)
+        for(Index v : edges[path[k]])
+          for(auto e = around.begin(local(v)); e != around.end(local(v)); ++e)
+            if(!reached[*e])
+            {
+              reached[*e] = true;
+              path.push_back(*e);
+            }
+      drop_path();
+    }
     std::size_t kept = 0;
     for(std::size_t e = 0; e < edges.size(); ++e)
       if(!drop[e])
@@ -94,19 +134,50 @@ inline void drop_short_curves(std::size_t n, std::vector<std::array<Index, 2> >&
   }
 }
 
-// The hinges of `mesh` whose faces' filtered normals at X are more than `degrees` apart, short
-// curves dropped: sorted, each once.
+// The hinges of `mesh` whose faces' filtered normals at X are more than `degrees` apart, and
+// jump (above), short curves dropped: sorted, each once.
 inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh& mesh, const Points& X, double degrees)
 {
   Normal_filter filter(mesh);
   filter.set_points(X);
   filter.filter(Feature_detection::filter_steps, Feature_detection::normal_difference_sigma);
-  const double cosine = std::cos(degrees * CGAL_PI / 180);
+  // Each hinge's angle between the filtered normals, and each face's hinges.
+  constexpr Index no_hinge = ~Index(0);
+  std::vector<double> angle(mesh.hinges.size());
+  std::vector<std::array<Index, 3> > face_hinges(mesh.triangles.size(), {no_hinge, no_hinge, no_hinge});
+  std::vector<unsigned char> count(mesh.triangles.size(), 0);
+  for(std::size_t k = 0; k < mesh.hinges.size(); ++k)
+  {
+    const Hinge& h = mesh.hinges[k];
+    angle[k] = std::acos(std::clamp(filter.normal(h.f[0]).dot(filter.normal(h.f[1])), -1., 1.));
+    for(Index f : h.f)
+      face_hinges[f][count[f]++] = Index(k);
+  }
+  // The smallest angle across face f's hinges other than k (0 if it has none).
+  const auto smallest_other = [&](Index f, std::size_t k) {
+    double smallest = 0;
+    bool any = false;
+    for(Index j : face_hinges[f])
+      if(j != no_hinge && j != k)
+      {
+        smallest = any ? (std::min)(smallest, angle[j]) : angle[j];
+        any = true;
+      }
+    return smallest;
+  };
+  const double threshold = degrees * CGAL_PI / 180;
   std::vector<std::array<Index, 2> > edges;
-  for(const Hinge& h : mesh.hinges)
-    if(filter.normal(h.f[0]).dot(filter.normal(h.f[1])) < cosine)
+  for(std::size_t k = 0; k < mesh.hinges.size(); ++k)
+  {
+    // a face of no area has no normal, so no crease beside it
+    const Hinge& h = mesh.hinges[k];
+    if(filter.normal(h.f[0]).isZero(0) || filter.normal(h.f[1]).isZero(0))
+      continue;
+    if(angle[k] > threshold &&
+       angle[k] > Feature_detection::jump_ratio * (std::max)(smallest_other(h.f[0], k), smallest_other(h.f[1], k)))
       edges.push_back(h.v);
-  drop_short_curves(mesh.number_of_vertices, edges, Feature_detection::shortest_spur);
+  }
+  drop_short_curves(edges, Feature_detection::shortest_spur);
   return edges;
 }
 

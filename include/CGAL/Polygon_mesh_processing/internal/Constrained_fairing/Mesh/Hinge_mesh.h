@@ -45,7 +45,8 @@ struct Hinge_mesh
   std::vector<std::array<Index, 3> > triangles;
   std::vector<Hinge> hinges;
   // A mesh's creases (Feature_edges.h): edges between two triangles with no hinge, smoothed and
-  // faired as curves; empty on a multi-label surface, whose junction lines are not its edges'.
+  // faired as curves; empty on a multi-label surface, whose junction lines the interfaces'
+  // hinges do not cross anyway.
   Curve_network creases;
 
   // The largest mesh the 32-bit indices hold (Bending_energy numbers face corners 3 f + k).
