@@ -65,16 +65,18 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
       vertex.insert(vertex.end(), e.begin(), e.end());
     std::sort(vertex.begin(), vertex.end());
     vertex.erase(std::unique(vertex.begin(), vertex.end()), vertex.end());
-    const auto local = [&vertex](Index v) {
-      return std::size_t(std::lower_bound(vertex.begin(), vertex.end(), v) - vertex.begin());
-    };
+    // each edge's ends in that numbering, found once
+    std::vector<std::array<std::size_t, 2> > ends(edges.size());
+    for(std::size_t e = 0; e < edges.size(); ++e)
+      for(std::size_t k = 0; k < 2; ++k)
+        ends[e][k] = std::size_t(std::lower_bound(vertex.begin(), vertex.end(), edges[e][k]) - vertex.begin());
     const Rows_by_vertex<std::size_t> around(vertex.size(), [&](const auto& add) {
       for(std::size_t e = 0; e < edges.size(); ++e)
-        for(Index v : edges[e])
-          add(local(v), e);
+        for(std::size_t v : ends[e])
+          add(v, e);
     });
     const auto degree = [&around](std::size_t v) { return std::size_t(around.end(v) - around.begin(v)); };
-    const auto other = [&](std::size_t e, std::size_t v) { return local(edges[e][0]) == v ? local(edges[e][1]) : local(edges[e][0]); };
+    const auto other = [&ends](std::size_t e, std::size_t v) { return ends[e][0] == v ? ends[e][1] : ends[e][0]; };
     std::vector<bool> drop(edges.size(), false), seen(edges.size(), false);
     // From vertex v along edge e, through the vertices on two edges: the edges passed, and
     // whether the walk came back to where it started.
@@ -104,7 +106,7 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
         drop_path();
       }
     for(std::size_t e = 0; e < edges.size(); ++e)
-      if(!seen[e] && degree(local(edges[e][0])) == 2 && degree(local(edges[e][1])) == 2 && walk(local(edges[e][0]), e))
+      if(!seen[e] && degree(ends[e][0]) == 2 && degree(ends[e][1]) == 2 && walk(ends[e][0], e))
         drop_path();
     // the clusters, by a search over the edges
     std::vector<bool> reached(edges.size(), false);
@@ -115,8 +117,8 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
       path.assign(1, first);
       reached[first] = true;
       for(std::size_t k = 0; k < path.size(); ++k)
-        for(Index v : edges[path[k]])
-          for(auto e = around.begin(local(v)); e != around.end(local(v)); ++e)
+        for(std::size_t v : ends[path[k]])
+          for(auto e = around.begin(v); e != around.end(v); ++e)
             if(!reached[*e])
             {
               reached[*e] = true;
