@@ -2,16 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Whatever fails midway (the linear solver, an exception from the callback or the solver, any
-// allocation), the mesh is left bit-identical to the input. Each allocation the call makes is
-// made to fail in turn.
+// allocation), the mesh is left bit-identical to the input, and so is the edge map that the
+// detection of creases writes. Each allocation the call makes is made to fail in turn.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <new>
 #include <stdexcept>
+#include <vector>
 
 namespace {
 
@@ -120,18 +122,31 @@ void check_callback_exception()
   CHECK(test::identical(test::points(m), test::points(input)));
 }
 
-void check_allocation_failures()
+using Edge_flags = Mesh::Property_map<Mesh::Edge_index, bool>;
+
+// The flags of the edge map "e:marks" of m (of a copy: all false if m has no such map).
+std::vector<bool> marked(Mesh m)
 {
-  const Mesh input = test::icosphere(1);
-  const auto parameters = CGAL::parameters::number_of_iterations(3);
+  const Edge_flags marks = m.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
+  std::vector<bool> flags;
+  for(auto e : edges(m))
+    flags.push_back(marks[e]);
+  return flags;
+}
+
+// Each allocation of `fair(m)` on a copy m of `noisy` made to fail in turn: most runs throw
+// std::bad_alloc, and each leaves the mesh and its edge map "e:marks", if any, as they were; a
+// failure absorbed on the way (an output string stream naming a property map sets its failbit)
+// gives the run without failures.
+template <typename Fair>
+void check_allocation_failures(const Mesh& noisy, const Fair& fair, const char* name)
+{
   // Count the allocations of a whole run.
-  Mesh counted = input;
-  test::add_noise(counted, 0.05, 42);
-  const Mesh noisy = counted;
+  Mesh counted = noisy;
   allocations = 0;
   fail_at = std::size_t(-1);
   armed = true;
-  const auto reference = PMP::constrained_fairing(counted, 0.05, parameters);
+  const auto reference = fair(counted);
   armed = false;
   const std::size_t total = allocations;
   CHECK(reference && total > 10);
@@ -145,22 +160,46 @@ void check_allocation_failures()
     armed = true;
     try
     {
-      // Some failures are absorbed on the way (an output string stream naming a property map
-      // sets its failbit): the run must then give the reference result.
-      const auto r = PMP::constrained_fairing(m, 0.05, parameters);
+      const auto r = fair(m);
       armed = false;
       CHECK(r.status == reference.status && test::identical(test::points(m), test::points(counted)));
+      CHECK(marked(m) == marked(counted));
     }
     catch(const std::bad_alloc&)
     {
       armed = false;
       ++failures;
-      unchanged += test::identical(test::points(m), test::points(noisy)) ? 1 : 0;
+      unchanged += test::identical(test::points(m), test::points(noisy)) && marked(m) == marked(noisy) ? 1 : 0;
     }
   }
-  std::cout << "  " << total << " allocations, each made to fail: " << failures << " runs threw std::bad_alloc, "
-            << unchanged << " of them left the mesh unchanged" << std::endl;
+  std::cout << "  " << name << ": " << total << " allocations, each made to fail: " << failures
+            << " runs threw std::bad_alloc, " << unchanged << " of them left the input unchanged" << std::endl;
   CHECK(failures > total / 2 && unchanged == failures);
+}
+
+void check_allocation_failures()
+{
+  Mesh sphere = test::icosphere(1);
+  test::add_noise(sphere, 0.05, 42);
+  check_allocation_failures(
+    sphere, [](Mesh& m) { return PMP::constrained_fairing(m, 0.05, CGAL::parameters::number_of_iterations(3)); },
+    "sphere");
+  // The creases detected are written in the map only once the call has succeeded.
+  Mesh cube = test::grid_cube(4);
+  const double eps = 0.05 / 4;
+  test::add_noise(cube, eps, 42);
+  cube.add_property_map<Mesh::Edge_index, bool>("e:marks", false);
+  const auto fair_with_creases = [eps](Mesh& m) {
+    const Edge_flags marks = m.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
+    return PMP::constrained_fairing(
+      m, eps, CFP::feature_angle(30., CGAL::parameters::edge_is_constrained_map(marks).number_of_iterations(3)));
+  };
+  check_allocation_failures(cube, fair_with_creases, "cube with creases");
+  Mesh detected = cube;
+  const auto r = fair_with_creases(detected);
+  CHECK(r.number_of_feature_edges == 48);
+  const std::vector<bool> flags = marked(detected);
+  CHECK(std::count(flags.begin(), flags.end(), true) == 48);
 }
 
 int main()

@@ -5,7 +5,8 @@
 // least 90 % of the clean mesh's sharp edges, with at most 5 % of what it finds not sharp, and
 // its normals end 4 times closer to the clean ones than those of the call without creases, which
 // rounds them; the edges it found, given in edge_is_constrained_map, give the same result bit for
-// bit, and the map is not written without the angle; short curves are dropped from the detection; bad angles are
+// bit, and the map is not written without the angle; short curves are dropped from the detection;
+// the detection and the result are bit-identical with one thread and with four; bad angles are
 // rejected with the mesh and the map untouched.
 
 #include "test_support.h"
@@ -16,6 +17,11 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/generators.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -190,6 +196,56 @@ void check_short_curves()
     CHECK(e[1] <= 20 || (e[0] >= 400 && e[1] < 410));
 }
 
+// As test_projected_lbfgs's check, with creases: a cube of 19,200 faces, more than four blocks
+// of the parallel loops over faces, edges and vertices, four threads asked for whatever the
+// machine has. Without TBB the loops are sequential: the check says it is skipped.
+void check_thread_count_independence()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  Mesh noisy = test::grid_cube(40);
+  const double eps = 0.25 / 40;
+  test::add_noise(noisy, eps, 11);
+  Mesh one = noisy, four = noisy;
+  Edge_flags found_one = one.add_property_map<Mesh::Edge_index, bool>("e:found", false).first;
+  Edge_flags found_four = four.add_property_map<Mesh::Edge_index, bool>("e:found", false).first;
+  const auto call = [&](Mesh& m, Edge_flags found) {
+    return PMP::constrained_fairing(
+      m, eps, CFP::feature_angle(30., CGAL::parameters::edge_is_constrained_map(found).number_of_iterations(40)));
+  };
+  PMP::Constrained_fairing_result r_one, r_four;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    r_one = call(one, found_one);
+  }
+  int threads = 0;
+  {
+    tbb::global_control several(tbb::global_control::max_allowed_parallelism, 4);
+    tbb::task_arena arena(4);
+    arena.execute([&] {
+      threads = tbb::this_task_arena::max_concurrency();
+      r_four = call(four, found_four);
+    });
+  }
+  if(threads < 2)
+  {
+    std::cout << "  SKIPPED: thread-count independence, TBB gave " << threads << " thread" << std::endl;
+    return;
+  }
+  CHECK(r_one && r_four && r_one.number_of_feature_edges > 0);
+  CHECK(r_one.number_of_feature_edges == r_four.number_of_feature_edges);
+  CHECK(r_one.final_energy == r_four.final_energy && r_one.number_of_iterations == r_four.number_of_iterations);
+  CHECK(same_points(one, four));
+  std::size_t same_marks = 0;
+  for(auto e : edges(one))
+    same_marks += found_one[e] == found_four[e];
+  CHECK(same_marks == num_edges(one));
+  std::cout << "creases, one thread and " << threads << " threads: " << r_one.number_of_feature_edges
+            << " edges, bit-identical" << std::endl;
+#else
+  std::cout << "  SKIPPED: thread-count independence, built without TBB (the loops are sequential)" << std::endl;
+#endif
+}
+
 void check_bad_angles()
 {
   Mesh clean = cube();
@@ -217,6 +273,7 @@ int main()
 {
   check_short_curves();
   check_bad_angles();
+  check_thread_count_independence();
   check_creases(cube(), 0.08, "cube");
   check_creases(cylinder(), 0.15, "cylinder");
   return test::report("test_feature_edges");

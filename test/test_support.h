@@ -18,11 +18,13 @@
 #include <CGAL/boost/graph/generators.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -133,6 +135,44 @@ PolygonMesh plane_patch(std::size_t n)
         CGAL::Euler::add_face(std::array<decltype(a), 3>{b, c, d}, m);
       }
     }
+  return m;
+}
+
+// The cube [0, 1]^3, each side an n x n grid of squares cut in two along alternating diagonals,
+// facing outward: its 12 n edges on the cube's edges are its only sharp ones (90 degrees).
+template <typename PolygonMesh = Mesh>
+PolygonMesh grid_cube(std::size_t n)
+{
+  using Vertex = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  PolygonMesh m;
+  std::map<std::array<std::size_t, 3>, Vertex> at;
+  const auto vertex = [&](std::array<std::size_t, 3> g) {
+    auto it = at.find(g);
+    if(it == at.end())
+      it = at.emplace(g, add_vertex(Point(double(g[0]) / double(n), double(g[1]) / double(n), double(g[2]) / double(n)), m)).first;
+    return it->second;
+  };
+  for(std::size_t axis = 0; axis < 3; ++axis)
+    for(std::size_t side : {std::size_t(0), n})
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = 0; j < n; ++j)
+        {
+          // (i, j) along the next two axes, whose cross product is `axis`: counterclockwise
+          // seen from outside on the far side, clockwise on the near one.
+          const auto corner = [&](std::size_t di, std::size_t dj) {
+            std::array<std::size_t, 3> g;
+            g[axis] = side;
+            g[(axis + 1) % 3] = i + di;
+            g[(axis + 2) % 3] = j + dj;
+            return vertex(g);
+          };
+          std::array<Vertex, 4> q = {corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)};
+          if(side == 0)
+            std::swap(q[1], q[3]);
+          const std::size_t d = (i + j) % 2;
+          CGAL::Euler::add_face(std::array<Vertex, 3>{q[d], q[d + 1], q[(d + 2) % 4]}, m);
+          CGAL::Euler::add_face(std::array<Vertex, 3>{q[d], q[(d + 2) % 4], q[(d + 3) % 4]}, m);
+        }
   return m;
 }
 
