@@ -22,6 +22,8 @@
 #include <CGAL/AABB_traits.h>
 #endif
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,6 +75,24 @@ struct Clean_surface
     }
   }
 };
+
+// The paper's bending energy of `result` over all its hinges, creases included, as the default
+// call measures it from `input` (same connectivity): a call with creases reports its energy
+// without the hinges across them.
+inline double bending_energy(const Mesh& result, const Mesh& input)
+{
+  namespace CF = CGAL::Polygon_mesh_processing::internal::Constrained_fairing;
+  CF::Points X0(num_vertices(input), 3), X(num_vertices(result), 3);
+  for(auto v : vertices(input))
+  {
+    const Point &p = input.point(v), &q = result.point(v);
+    X0.row(v.idx()) << p.x(), p.y(), p.z();
+    X.row(v.idx()) << q.x(), q.y(), q.z();
+  }
+  const CF::Hinge_mesh mesh(input, get(CGAL::vertex_index, input));
+  CF::Bending_energy energy(mesh, X0);
+  return energy.value(X);
+}
 
 // `result` and `input` have the clean mesh's connectivity; `eps` is the bound checked.
 inline Quality measure(const Mesh& result, const Mesh& input, const Clean_surface& clean, double eps, double energy)

@@ -5,7 +5,8 @@
 // least 90 % of the clean mesh's sharp edges, with at most 5 % of what it finds not sharp, and
 // its normals end 4 times closer to the clean ones than those of the call without creases, which
 // rounds them; the edges it found, given in edge_is_constrained_map, give the same result bit for
-// bit, and the map is not written without the angle; short curves are dropped from the detection;
+// bit, and the map is not written without the angle; short curves are dropped from the detection,
+// and curves that detour by a triangle or around a vertex straightened;
 // the detection and the result are bit-identical with one thread and with four; bad angles are
 // rejected with the mesh and the map untouched.
 
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -246,6 +248,80 @@ void check_thread_count_independence()
 #endif
 }
 
+// An n x n patch of the plane of equilateral triangles: vertex (i, j) at (i + j / 2, j sqrt(3) / 2),
+// each cell cut along its diagonal from (i + 1, j) to (i, j + 1); every inner vertex has six
+// neighbours.
+Mesh equilateral_patch(std::size_t n)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+      v.push_back(m.add_vertex(Point(double(i) + 0.5 * double(j), std::sqrt(3.) / 2 * double(j), 0)));
+  for(std::size_t j = 0; j + 1 < n; ++j)
+    for(std::size_t i = 0; i + 1 < n; ++i)
+    {
+      const auto a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i + 1], d = v[(j + 1) * n + i];
+      m.add_face(a, b, d);
+      m.add_face(b, c, d);
+    }
+  return m;
+}
+
+// A line along row 5 of an equilateral patch that detours by a triangle is straightened,
+// wherever the detour is, and so is one that detours around a vertex of the row; a corner of the
+// curve is kept.
+void check_straightening()
+{
+  const std::size_t n = 12;
+  const Mesh patch = equilateral_patch(n);
+  const CF::Hinge_mesh mesh(patch, get(CGAL::vertex_index, patch));
+  CF::Points X(num_vertices(patch), 3);
+  for(auto v : vertices(patch))
+    X.row(v.idx()) << patch.point(v).x(), patch.point(v).y(), patch.point(v).z();
+  using Edges = std::vector<std::array<CF::Index, 2> >;
+  const auto at = [n](std::size_t i, std::size_t j) { return CF::Index(j * n + i); };
+  const auto path = [&](std::initializer_list<std::array<std::size_t, 2> > points, Edges edges) {
+    for(auto p = points.begin(); p + 1 != points.end(); ++p)
+      edges.push_back(CF::sorted_edge(at((*p)[0], (*p)[1]), at((*(p + 1))[0], (*(p + 1))[1])));
+    std::sort(edges.begin(), edges.end());
+    return edges;
+  };
+  const auto without = [&](Edges edges, std::size_t first, std::size_t last) {
+    edges.erase(std::remove_if(edges.begin(), edges.end(),
+                               [&](const auto& e) {
+                                 for(std::size_t i = first; i < last; ++i)
+                                   if(e == CF::sorted_edge(at(i, 5), at(i + 1, 5)))
+                                     return true;
+                                 return false;
+                               }),
+                edges.end());
+    return edges;
+  };
+  const auto straightened = [&](Edges edges) {
+    CF::straighten_creases(mesh, X, edges);
+    return edges;
+  };
+  Edges line;
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    line = path({{i, 5}, {i + 1, 5}}, line);
+  CHECK(straightened(line) == line);
+  for(std::size_t i = 1; i + 2 < n; ++i)
+  {
+    // by the triangle above edge i, and by the one below it
+    CHECK(straightened(path({{i, 5}, {i, 6}, {i + 1, 5}}, without(line, i, i + 1))) == line);
+    CHECK(straightened(path({{i, 5}, {i + 1, 4}, {i + 1, 5}}, without(line, i, i + 1))) == line);
+  }
+  // around (5, 5), above it and below it
+  CHECK(straightened(path({{4, 5}, {4, 6}, {5, 6}, {6, 5}}, without(line, 4, 6))) == line);
+  CHECK(straightened(path({{4, 5}, {5, 4}, {6, 4}, {6, 5}}, without(line, 4, 6))) == line);
+  // a corner: along row 5 to (6, 5), then up towards (6, 11), and then a sharper one
+  const Edges corner = path({{0, 5}, {1, 5}, {2, 5}, {3, 5}, {4, 5}, {5, 5}, {6, 5}, {6, 6}, {6, 7}, {6, 8}, {6, 9}}, {});
+  CHECK(straightened(corner) == corner);
+  const Edges sharper = path({{0, 5}, {1, 5}, {2, 5}, {3, 5}, {4, 5}, {5, 5}, {6, 5}, {5, 6}, {4, 7}, {3, 8}, {2, 9}}, {});
+  CHECK(straightened(sharper) == sharper);
+}
+
 void check_bad_angles()
 {
   Mesh clean = cube();
@@ -272,6 +348,7 @@ void check_bad_angles()
 int main()
 {
   check_short_curves();
+  check_straightening();
   check_bad_angles();
   check_thread_count_independence();
   check_creases(cube(), 0.08, "cube");

@@ -89,12 +89,13 @@ corner) is faired by its surfaces alone. The detection compares the face normals
 bilateral filter, which averages the noise on each side of a crease and leaves the two sides
 apart: an edge is a crease where they are more than the angle apart and more than 1.5 times the
 smaller angle across each face's other edges; curves that end freely after fewer than 8 edges,
-and closed curves and clusters of fewer, are dropped. On six noisy CAD parts of CGAL's demo data
+and closed curves and clusters of fewer, are dropped, and curves that detour by a triangle or
+around a vertex off their line are straightened. On six noisy CAD parts of CGAL's demo data
 (`benchmark/fairing_features`, noise and `epsilon` 0.25 times the mean edge length)
-`feature_angle(30)` finds 93 to 100 % of their edges sharper than 30 degrees, at most 1 % of what
-it finds is not sharp, and its mean normal error is 0.08 to 0.42 times the default call's; on a
-thin turbine blade it finds 46 %, and at twice the noise 9 to 27 % of what it marks is not sharp
-(see the user manual).
+`feature_angle(30)` finds 92 to 100 % of their edges sharper than 30 degrees, at most 0.6 % of
+what it finds is not sharp, and its mean normal error is 0.08 to 0.42 times the default call's;
+on a thin turbine blade it finds 31 %, and at twice the noise 1.6 to 21 % of what it marks is
+not sharp (see the user manual).
 
 <b>Tolerances.</b> `epsilon` is the tolerance of every vertex and caps all the others:
 - `vertex_tolerance_map` gives each vertex its own tolerance `t(v)`, and the vertex then stays

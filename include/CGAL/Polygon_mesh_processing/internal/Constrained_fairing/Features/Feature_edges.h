@@ -30,6 +30,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -136,6 +138,120 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
   }
 }
 
+// Straightens the crease curves `edges` (sorted, each once) of `mesh` where they detour by a
+// triangle or two off their line, which a noisy crease's detection does: the faces between the
+// detour and the true crease are then faired into the wrong side's plane, turned by the
+// crease's angle. A chain of two or three edges from u to w through vertices on no other crease
+// edge is replaced by the hinge u w if there is one, and a chain of three around a vertex x on
+// no crease by u x w, if the curve heads on alike on both sides of the chain (a corner of the
+// curve is kept). Each move takes edges off, so the moves end; a smooth curve has no such chain
+// (it would turn by 120 degrees within one or two edges).
+inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vector<std::array<Index, 2> >& edges)
+{
+  if(edges.empty())
+    return;
+  const std::size_t n = mesh.number_of_vertices;
+  const Rows_by_vertex<Index> neighbours(n, [&](const auto& add) {
+    for(const Hinge& h : mesh.hinges)
+    {
+      add(h.v[0], h.v[1]);
+      add(h.v[1], h.v[0]);
+    }
+  });
+  const auto adjacent = [&](Index a, Index b) {
+    return std::find(neighbours.begin(a), neighbours.end(a), b) != neighbours.end(a);
+  };
+  std::set<std::array<Index, 2> > creases(edges.begin(), edges.end());
+  std::vector<unsigned> degree(n, 0);
+  for(const auto& e : edges)
+    for(Index v : e)
+      ++degree[v];
+  const auto remove = [&](Index a, Index b) {
+    creases.erase(sorted_edge(a, b));
+    --degree[a];
+    --degree[b];
+  };
+  const auto insert = [&](Index a, Index b) {
+    creases.insert(sorted_edge(a, b));
+    ++degree[a];
+    ++degree[b];
+  };
+  const auto crease_neighbour = [&](Index v, Index not_this) {
+    for(auto w = neighbours.begin(v); w != neighbours.end(v); ++w)
+      if(*w != not_this && creases.count(sorted_edge(v, *w)))
+        return *w;
+    return v;
+  };
+  // Whether the curve heads on alike before u (coming from u's crease neighbour other than
+  // `from_u`) and after w (towards w's other than `from_w`), within 60 degrees, two edges away
+  // where it can: a detour does, a corner of the curve does not. Ends and junctions tell
+  // nothing, and allow the move.
+  const auto heading = [&](Index v, Index from) {
+    Index back = v;
+    for(std::size_t step = 0; step < 2 && degree[v] == 2; ++step)
+    {
+      const Index next = crease_neighbour(v, from);
+      from = v;
+      v = next;
+    }
+    return std::make_pair(back, v);
+  };
+  const auto continues = [&](Index u, Index from_u, Index w, Index from_w) {
+    if(degree[u] != 2 || degree[w] != 2)
+      return true;
+    const auto before = heading(u, from_u), after = heading(w, from_w);
+    const Eigen::Vector3d a = (X.row(before.first) - X.row(before.second)).transpose();
+    const Eigen::Vector3d b = (X.row(after.second) - X.row(after.first)).transpose();
+    return a.dot(b) > 0.5 * a.norm() * b.norm();
+  };
+  // Tries the moves on the chain from u through u's crease neighbour `first`; true if one was made.
+  const auto straighten = [&](Index u, Index first) {
+    std::array<Index, 4> chain = {u, first, u, u};
+    for(std::size_t k = 2; k <= 3; ++k)
+    {
+      const Index inner = chain[k - 1];
+      if(degree[inner] != 2)
+        return false;
+      chain[k] = crease_neighbour(inner, chain[k - 2]);
+      const Index w = chain[k];
+      if(w == u || w == inner)
+        return false;
+      if(!continues(u, chain[1], w, chain[k - 1]))
+        continue;
+      if(adjacent(u, w) && !creases.count(sorted_edge(u, w)))
+      {
+        for(std::size_t j = 0; j < k; ++j)
+          remove(chain[j], chain[j + 1]);
+        insert(u, w);
+        return true;
+      }
+      if(k == 3)
+        for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
+          if(degree[*x] == 0 && adjacent(*x, w))
+          {
+            for(std::size_t j = 0; j < k; ++j)
+              remove(chain[j], chain[j + 1]);
+            insert(u, *x);
+            insert(*x, w);
+            return true;
+          }
+    }
+    return false;
+  };
+  for(bool moved = true; moved;)
+  {
+    moved = false;
+    for(Index u = 0; u < Index(n); ++u)
+      for(auto v = neighbours.begin(u); v != neighbours.end(u) && degree[u] > 0; ++v)
+        if(creases.count(sorted_edge(u, *v)) && straighten(u, *v))
+        {
+          moved = true;
+          break;
+        }
+  }
+  edges.assign(creases.begin(), creases.end());
+}
+
 // The hinges of `mesh` whose faces' filtered normals at X are more than `degrees` apart, and
 // jump (above), short curves dropped: sorted, each once.
 inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh& mesh, const Points& X, double degrees)
@@ -179,6 +295,8 @@ inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh&
        angle[k] > Feature_detection::jump_ratio * (std::max)(smallest_other(h.f[0], k), smallest_other(h.f[1], k)))
       edges.push_back(h.v);
   }
+  drop_short_curves(edges, Feature_detection::shortest_spur);
+  straighten_creases(mesh, X, edges);
   drop_short_curves(edges, Feature_detection::shortest_spur);
   return edges;
 }
