@@ -273,14 +273,14 @@ Mesh equilateral_patch(std::size_t n)
 // curve is kept.
 void check_straightening()
 {
-  const std::size_t n = 12;
+  constexpr std::size_t n = 12;
   const Mesh patch = equilateral_patch(n);
   const CF::Hinge_mesh mesh(patch, get(CGAL::vertex_index, patch));
   CF::Points X(num_vertices(patch), 3);
   for(auto v : vertices(patch))
     X.row(v.idx()) << patch.point(v).x(), patch.point(v).y(), patch.point(v).z();
   using Edges = std::vector<std::array<CF::Index, 2> >;
-  const auto at = [n](std::size_t i, std::size_t j) { return CF::Index(j * n + i); };
+  const auto at = [](std::size_t i, std::size_t j) { return CF::Index(j * n + i); };
   const auto path = [&](std::initializer_list<std::array<std::size_t, 2> > points, Edges edges) {
     for(auto p = points.begin(); p + 1 != points.end(); ++p)
       edges.push_back(CF::sorted_edge(at((*p)[0], (*p)[1]), at((*(p + 1))[0], (*(p + 1))[1])));
