@@ -5,6 +5,7 @@
 // parts, and what the detection marks on organic meshes.
 //
 //   fairing_features [--demo DIR] [--angle DEG] [--faces N] [--runs N] [--threads K]
+//                    [--parts NAME,NAME...] [--write DIR]
 //
 // CAD parts (fandisk, joint, blade, part, dragknob, anchor, cube-meshed from CGAL's
 // demo data in DIR: see get_demo_meshes.sh; skipped cleanly without them): each is a coarse
@@ -19,6 +20,10 @@
 // not sharp. Methods: the default call, the accurate objective, the call with
 // `feature_angle(DEG)`, and the call given the clean sharp edges (`edge_is_constrained_map`:
 // what a perfect detection would give).
+// --parts runs only the parts named; --write writes each case's meshes into DIR, as OFF files
+// with the clean mesh's connectivity (NAME_clean.off, NAME_D_noisy.off, NAME_D_default.off,
+// NAME_D_features.off) and the edges feature_angle found (NAME_D_creases.txt, a pair of vertex
+// indices per line), from which doc/make_figures.py draws the manual's figure.
 // Organic meshes (the bundled bunny and elephant, 0.25 h of noise): the share of edges the
 // detection marks, and the bending energy over all hinges against the default call's.
 
@@ -124,9 +129,19 @@ struct Row
 enum Method { DEFAULT, ACCURATE, FEATURES, GIVEN, METHODS };
 const char* method_name[] = {"default", "accurate objective", "feature_angle", "given sharp edges"};
 
-// One method on `noisy`: the result measured against the clean mesh.
+void write(const std::string& path, const Mesh& mesh)
+{
+  if(!CGAL::IO::write_polygon_mesh(path, mesh, CGAL::parameters::stream_precision(17)))
+  {
+    std::cerr << "error: cannot write " << path << std::endl;
+    std::exit(1);
+  }
+}
+
+// One method on `noisy`: the result measured against the clean mesh, and written to
+// `prefix`.off (with the creases found, for feature_angle) unless `prefix` is empty.
 Row run(Method method, const Mesh& noisy, const Clean_surface& clean, Edge_flags clean_sharp,
-        const std::vector<bool>& near, double eps, double angle, int runs)
+        const std::vector<bool>& near, double eps, double angle, int runs, const std::string& prefix)
 {
   Row row;
   Mesh result;
@@ -153,6 +168,18 @@ Row run(Method method, const Mesh& noisy, const Clean_surface& clean, Edge_flags
     std::exit(1);
   }
   row.q = measure(result, noisy, clean, eps, r.final_bending_energy);
+  if(!prefix.empty())
+  {
+    write(prefix + ".off", result);
+    if(method == FEATURES)
+    {
+      std::ofstream creases(prefix + "_creases.txt");
+      for(auto e : edges(result))
+        if(marks[e])
+          creases << source(halfedge(e, result), result).idx() << ' ' << target(halfedge(e, result), result).idx()
+                  << '\n';
+    }
+  }
   row.near_error = normal_error_near(result, clean, near);
   row.marked = r.number_of_feature_edges;
   if(method == FEATURES)
@@ -194,6 +221,9 @@ int main(int argc, char* argv[])
   const double angle = std::stod(arguments.option("angle", "30"));
   const double target_faces = std::stod(arguments.option("faces", "20000"));
   const int runs = arguments.runs;
+  const std::string parts =
+    "," + arguments.option("parts", "fandisk,joint,blade,part,dragknob,anchor,cube-meshed") + ",";
+  const std::string out = arguments.option("write", "");
   std::cout << machine_description() << std::endl;
   std::cout << "feature_angle(" << angle << "), runs " << runs << " (median time)" << std::endl;
 
@@ -202,6 +232,8 @@ int main(int argc, char* argv[])
   int cases = 0;
   for(const std::string name : {"fandisk", "joint", "blade", "part", "dragknob", "anchor", "cube-meshed"})
   {
+    if(parts.find("," + name + ",") == std::string::npos)
+      continue;
     Mesh coarse;
     if(!CGAL::IO::read_polygon_mesh(demo + "/" + name + ".off", coarse))
     {
@@ -216,17 +248,24 @@ int main(int argc, char* argv[])
     std::size_t sharp_count = 0;
     for(auto e : edges(clean))
       sharp_count += sharp[e];
+    if(!out.empty())
+      write(out + "/" + name + "_clean.off", clean);
     for(double d : {0.25, 0.5})
     {
       Mesh noisy = clean;
       add_noise(noisy, d * h, 1);
+      const std::string prefix = out.empty() ? "" : out + "/" + name + "_" + (d == 0.25 ? "0.25" : "0.5") + "_";
+      if(!out.empty())
+        write(prefix + "noisy.off", noisy);
       const double eps = d * h;
       std::cout << name << ", " << num_faces(clean) << " faces, " << sharp_count << " sharp edges, noise " << d
                 << " h:" << std::endl;
       Row rows[METHODS];
       for(int m = 0; m < METHODS; ++m)
       {
-        rows[m] = run(Method(m), noisy, surface, sharp, near, eps, angle, runs);
+        const bool written = !prefix.empty() && (m == DEFAULT || m == FEATURES);
+        rows[m] = run(Method(m), noisy, surface, sharp, near, eps, angle, runs,
+                      written ? prefix + (m == DEFAULT ? "default" : "features") : "");
         print(method_name[m], rows[m]);
       }
       const Row& base = rows[DEFAULT];

@@ -3,7 +3,9 @@
 #
 #   doc/make_figures.py BUILD_DIR
 #
-# BUILD_DIR is a Release build of the project (tools, examples and benchmarks built). The
+# BUILD_DIR is a Release build of the project (tools, examples and benchmarks built), with
+# CGAL's demo meshes in BUILD_DIR/cgal_demo_data (benchmark/get_demo_meshes.sh) for the creases'
+# figure, which is skipped without them. The
 # script runs them on the bundled meshes, in a scratch folder, and renders the PNGs of
 # doc/figures with Debian's python3-matplotlib and python3-numpy (orthographic view, flat
 # shading, painter's algorithm; no display needed). It prints what the programs said, which
@@ -18,7 +20,7 @@ import tempfile
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-from matplotlib.collections import PolyCollection
+from matplotlib.collections import LineCollection, PolyCollection
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -106,9 +108,11 @@ def view(yaw, pitch):
     return rx @ ry
 
 
-def draw(ax, points, faces, values, cmap, vmin, vmax, rotation, title):
+def draw(ax, points, faces, values, cmap, vmin, vmax, rotation, title, lines=None):
     """Orthographic view along -z after `rotation`, back faces culled, flat shading
-    by the light from the viewer, each face coloured by the mean of its vertices' values."""
+    by the light from the viewer, each face coloured by the mean of its vertices' values, or by
+    its own value if `values` has one per face; `lines`, pairs of vertex indices, drawn on top
+    where a face beside them faces the viewer."""
     p = (points - points.mean(axis=0)) @ rotation.T
     tri = p[faces]
     normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
@@ -116,11 +120,19 @@ def draw(ax, points, faces, values, cmap, vmin, vmax, rotation, title):
     facing = normal[:, 2] > 0
     order = np.argsort(tri[facing][:, :, 2].mean(axis=1))
     shade = 0.35 + 0.65 * (normal[facing][:, 2] / np.maximum(length[facing], 1e-300))[order]
-    colour = plt.get_cmap(cmap)(np.clip((values[faces[facing]].mean(axis=1)[order] - vmin) / (vmax - vmin), 0, 1))
+    face_values = values[facing] if len(values) == len(faces) else values[faces[facing]].mean(axis=1)
+    colour = plt.get_cmap(cmap)(np.clip((face_values[order] - vmin) / (vmax - vmin), 0, 1))
     colour[:, :3] *= shade[:, None]
     # Edges in the faces' colours, so that no seam shows between neighbours.
     ax.add_collection(PolyCollection(tri[facing][order][:, :, :2], facecolors=colour, edgecolors=colour,
                                      linewidths=0.3))
+    if lines is not None:
+        seen = set()
+        for f in np.flatnonzero(facing):
+            for k in range(3):
+                seen.add((min(faces[f][k], faces[f][(k + 1) % 3]), max(faces[f][k], faces[f][(k + 1) % 3])))
+        shown = [p[list(e), :2] for e in lines if (min(e), max(e)) in seen]
+        ax.add_collection(LineCollection(shown, colors="#00e5ff", linewidths=0.8))
     ax.set_xlim(p[:, 0].min(), p[:, 0].max())
     ax.set_ylim(p[:, 1].min(), p[:, 1].max())
     ax.set_aspect("equal")
@@ -201,6 +213,42 @@ def main():
     save(fig, "voxels.png")
 
     label_map_figure(build)
+    creases_figure(build)
+
+
+def face_normals(points, faces):
+    normal = np.cross(points[faces[:, 1]] - points[faces[:, 0]], points[faces[:, 2]] - points[faces[:, 0]])
+    return normal / np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
+
+
+def creases_figure(build):
+    """fandisk of CGAL's demo data, remeshed to about 20,000 triangles with its sharp edges kept,
+    with noise of 0.25 h (benchmark/fairing_features): the noisy input, the default call and
+    feature_angle(30) with the creases it found, each face coloured by its normal's angle to the
+    clean mesh's."""
+    demo = os.path.join(build, "cgal_demo_data", "meshes")
+    if not os.path.exists(os.path.join(demo, "fandisk.off")):
+        print("creases figure skipped: no fandisk.off in %s (benchmark/get_demo_meshes.sh %s)"
+              % (demo, os.path.join(build, "cgal_demo_data")))
+        return
+    work = tempfile.mkdtemp()
+    run(os.path.join(build, "benchmark", "fairing_features"), "--runs", "1", "--parts", "fandisk", "--demo", demo,
+        "--write", work)
+    clean, faces = read_off(os.path.join(work, "fandisk_clean.off"))
+    normal = face_normals(clean, faces)
+    creases = np.loadtxt(os.path.join(work, "fandisk_0.25_features_creases.txt"), dtype=int)
+    angle = view(-40, -30)
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    for ax, name, title in ((axes[0], "noisy", "noisy input (noise radius 0.25 h)"),
+                            (axes[1], "default", "default call, eps = 0.25 h"),
+                            (axes[2], "features", "feature_angle(30), the creases found")):
+        points, _ = read_off(os.path.join(work, "fandisk_0.25_%s.off" % name))
+        error = np.degrees(np.arccos(np.clip(np.einsum("ij,ij->i", face_normals(points, faces), normal), -1, 1)))
+        print("%s: mean normal error %.2f degrees" % (name, error.mean()))
+        mappable = draw(ax, points, faces, error, "magma", 0, 20, angle, title,
+                        lines=creases if name == "features" else None)
+    fig.colorbar(mappable, ax=axes, shrink=0.6, label="normal error (degrees)")
+    save(fig, "fandisk_creases.png")
 
 
 def label_map_figure(build):
