@@ -31,7 +31,6 @@
 #include <cmath>
 #include <cstddef>
 #include <set>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -186,22 +185,20 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
   // `from_u`) and after w (towards w's other than `from_w`), within 60 degrees, two edges away
   // where it can: a detour does, a corner of the curve does not. Ends and junctions tell
   // nothing, and allow the move.
-  const auto heading = [&](Index v, Index from) {
-    Index back = v;
+  const auto two_edges_on = [&](Index v, Index from) {
     for(std::size_t step = 0; step < 2 && degree[v] == 2; ++step)
     {
       const Index next = crease_neighbour(v, from);
       from = v;
       v = next;
     }
-    return std::make_pair(back, v);
+    return v;
   };
   const auto continues = [&](Index u, Index from_u, Index w, Index from_w) {
     if(degree[u] != 2 || degree[w] != 2)
       return true;
-    const auto before = heading(u, from_u), after = heading(w, from_w);
-    const Eigen::Vector3d a = (X.row(before.first) - X.row(before.second)).transpose();
-    const Eigen::Vector3d b = (X.row(after.second) - X.row(after.first)).transpose();
+    const Eigen::Vector3d a = (X.row(u) - X.row(two_edges_on(u, from_u))).transpose();
+    const Eigen::Vector3d b = (X.row(two_edges_on(w, from_w)) - X.row(w)).transpose();
     return a.dot(b) > 0.5 * a.norm() * b.norm();
   };
   // Tries the moves on the chain from u through u's crease neighbour `first`; true if one was made.
@@ -214,7 +211,7 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
         return false;
       chain[k] = crease_neighbour(inner, chain[k - 2]);
       const Index w = chain[k];
-      if(w == u || w == inner)
+      if(w == u)
         return false;
       if(!continues(u, chain[1], w, chain[k - 1]))
         continue;
