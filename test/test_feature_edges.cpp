@@ -270,7 +270,7 @@ Mesh equilateral_patch(std::size_t n)
 
 // A line along row 5 of an equilateral patch that detours by a triangle is straightened,
 // wherever the detour is, and so is one that detours around a vertex of the row; a corner of the
-// curve is kept.
+// curve is kept; a jog round a vertex takes the vertex when it is clearly nearer the line.
 void check_straightening()
 {
   constexpr std::size_t n = 12;
@@ -320,6 +320,16 @@ void check_straightening()
   CHECK(straightened(corner) == corner);
   const Edges sharper = path({{0, 5}, {1, 5}, {2, 5}, {3, 5}, {4, 5}, {5, 5}, {6, 5}, {5, 6}, {4, 7}, {3, 8}, {2, 9}}, {});
   CHECK(straightened(sharper) == sharper);
+  // a jog from row 5 to row 6, through (5, 5) or round it by (4, 6): either kept where the two
+  // are as far from the line from (4, 5) to (5, 6), the one through (5, 5) taken where it is
+  // clearly the nearer
+  const Edges jog = path({{0, 5}, {1, 5}, {2, 5}, {3, 5}, {4, 5}, {5, 5}, {5, 6}, {6, 6}, {7, 6}, {8, 6}, {9, 6}, {10, 6}}, {});
+  const Edges round = path({{0, 5}, {1, 5}, {2, 5}, {3, 5}, {4, 5}, {4, 6}, {5, 6}, {6, 6}, {7, 6}, {8, 6}, {9, 6}, {10, 6}}, {});
+  CHECK(straightened(jog) == jog);
+  CHECK(straightened(round) == round);
+  X.row(at(5, 5)) += 0.3 * Eigen::RowVector3d(-0.5, std::sqrt(3.) / 2, 0);
+  CHECK(straightened(round) == jog);
+  CHECK(straightened(jog) == jog);
 }
 
 void check_bad_angles()

@@ -141,10 +141,12 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
 // triangle or two off their line, which a noisy crease's detection does: the faces between the
 // detour and the true crease are then faired into the wrong side's plane, turned by the
 // crease's angle. A chain of two or three edges from u to w through vertices on no other crease
-// edge is replaced by the hinge u w if there is one, and a chain of three around a vertex x on
-// no crease by u x w, if the curve heads on alike on both sides of the chain (a corner of the
-// curve is kept). Each move takes edges off, so the moves end; a smooth curve has no such chain
-// (it would turn by 120 degrees within one or two edges).
+// edge is replaced by the hinge u w if there is one, a chain of three around a vertex x on no
+// crease by u x w, and a chain of two u y w around such a vertex x (the two triangles' other
+// side) by u x w where x is nearer the line u w than y is; each only if the curve heads on alike
+// on both sides of the chain (a corner of the curve is kept). The first two moves take edges
+// off, and a swap takes off a vertex that no swap puts back, so the moves end; a smooth curve
+// has no chain of the first two kinds (it would turn by 120 degrees within one or two edges).
 inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vector<std::array<Index, 2> >& edges)
 {
   if(edges.empty())
@@ -201,6 +203,13 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
     const Eigen::Vector3d b = (X.row(two_edges_on(w, from_w)) - X.row(w)).transpose();
     return a.dot(b) > 0.5 * a.norm() * b.norm();
   };
+  // How far m is from the line through u and w, times |w - u|.
+  const auto off_chord = [&](Index m, Index u, Index w) {
+    const Eigen::Vector3d a = (X.row(m) - X.row(u)).transpose(), b = (X.row(w) - X.row(u)).transpose();
+    return a.cross(b).norm();
+  };
+  // the vertices a swap took off a curve, which no swap puts back (so that the swaps end)
+  std::vector<bool> taken_off(n, false);
   // Tries the moves on the chain from u through u's crease neighbour `first`; true if one was made.
   const auto straighten = [&](Index u, Index first) {
     std::array<Index, 4> chain = {u, first, u, u};
@@ -222,6 +231,18 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
         insert(u, w);
         return true;
       }
+      if(k == 2)
+        for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
+          if(degree[*x] == 0 && !taken_off[*x] && adjacent(*x, w) && adjacent(*x, inner) &&
+             1.5 * off_chord(*x, u, w) < off_chord(inner, u, w))
+          {
+            remove(u, inner);
+            remove(inner, w);
+            insert(u, *x);
+            insert(*x, w);
+            taken_off[inner] = true;
+            return true;
+          }
       if(k == 3)
         for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
           if(degree[*x] == 0 && adjacent(*x, w))
