@@ -270,7 +270,8 @@ Mesh equilateral_patch(std::size_t n)
 
 // A line along row 5 of an equilateral patch that detours by a triangle is straightened,
 // wherever the detour is, and so is one that detours around a vertex of the row; a corner of the
-// curve is kept; a jog round a vertex takes the vertex when it is clearly nearer the line.
+// curve is kept; a jog round a vertex takes the vertex when it is clearly nearer the line, and of
+// two paths of a jog found at once the farther is dropped.
 void check_straightening()
 {
   constexpr std::size_t n = 12;
@@ -330,6 +331,13 @@ void check_straightening()
   X.row(at(5, 5)) += 0.3 * Eigen::RowVector3d(-0.5, std::sqrt(3.) / 2, 0);
   CHECK(straightened(round) == jog);
   CHECK(straightened(jog) == jog);
+  // both paths at once (a diamond): the one farther from the line dropped
+  Edges both = jog;
+  both.insert(both.end(), round.begin(), round.end());
+  std::sort(both.begin(), both.end());
+  both.erase(std::unique(both.begin(), both.end()), both.end());
+  CHECK(both.size() == jog.size() + 2);
+  CHECK(straightened(both) == jog);
 }
 
 void check_bad_angles()

@@ -143,10 +143,12 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
 // crease's angle. A chain of two or three edges from u to w through vertices on no other crease
 // edge is replaced by the hinge u w if there is one, a chain of three around a vertex x on no
 // crease by u x w, and a chain of two u y w around such a vertex x (the two triangles' other
-// side) by u x w where x is nearer the line u w than y is; each only if the curve heads on alike
-// on both sides of the chain (a corner of the curve is kept). The first two moves take edges
-// off, and a swap takes off a vertex that no swap puts back, so the moves end; a smooth curve
-// has no chain of the first two kinds (it would turn by 120 degrees within one or two edges).
+// side) by u x w where x is nearer the line u w than y is by half as much again, and of two
+// chains of two u y w and u z w (a diamond) the one farther from the line u w is dropped; each
+// only if the curve heads on alike on both sides of the chain (a corner of the curve is kept).
+// The other moves take edges off, and a swap takes off a vertex that no swap puts back, so the
+// moves end; a smooth curve has no chain of the first two kinds (it would turn by 120 degrees
+// within one or two edges).
 inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vector<std::array<Index, 2> >& edges)
 {
   if(edges.empty())
@@ -231,6 +233,15 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
         insert(u, w);
         return true;
       }
+      if(k == 2)
+        for(auto z = neighbours.begin(u); z != neighbours.end(u); ++z)
+          if(*z != inner && degree[*z] == 2 && creases.count(sorted_edge(u, *z)) && creases.count(sorted_edge(*z, w)) &&
+             off_chord(*z, u, w) < off_chord(inner, u, w))
+          {
+            remove(u, inner);
+            remove(inner, w);
+            return true;
+          }
       if(k == 2)
         for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
           if(degree[*x] == 0 && !taken_off[*x] && adjacent(*x, w) && adjacent(*x, inner) &&
