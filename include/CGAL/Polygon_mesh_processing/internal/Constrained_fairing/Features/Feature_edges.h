@@ -44,6 +44,8 @@ struct Feature_detection
   static constexpr double normal_difference_sigma = 0.4;
   static constexpr std::size_t shortest_spur = 8;
   static constexpr double jump_ratio = 1.5;
+  // a jog round a vertex is swapped to it where the vertex is this many times nearer the line
+  static constexpr double jog_ratio = 1.5;
 };
 
 // An edge as its two vertices, the smaller first.
@@ -143,7 +145,7 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
 // crease's angle. A chain of two or three edges from u to w through vertices on no other crease
 // edge is replaced by the hinge u w if there is one, a chain of three around a vertex x on no
 // crease by u x w, and a chain of two u y w around such a vertex x (the two triangles' other
-// side) by u x w where x is nearer the line u w than y is by half as much again, and of two
+// side) by u x w where x is `jog_ratio` times nearer the line u w than y is, and of two
 // chains of two u y w and u z w (a diamond) the one farther from the line u w is dropped; each
 // only if the curve heads on alike on both sides of the chain (a corner of the curve is kept).
 // The other moves take edges off, and a swap takes off a vertex that no swap puts back, so the
@@ -234,18 +236,19 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
         return true;
       }
       if(k == 2)
-        for(auto z = neighbours.begin(u); z != neighbours.end(u); ++z)
-          if(*z != inner && degree[*z] == 2 && creases.count(sorted_edge(u, *z)) && creases.count(sorted_edge(*z, w)) &&
-             off_chord(*z, u, w) < off_chord(inner, u, w))
+        for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
+        {
+          // the other path of a diamond, nearer the line
+          if(*x != inner && degree[*x] == 2 && creases.count(sorted_edge(u, *x)) && creases.count(sorted_edge(*x, w)) &&
+             off_chord(*x, u, w) < off_chord(inner, u, w))
           {
             remove(u, inner);
             remove(inner, w);
             return true;
           }
-      if(k == 2)
-        for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
+          // the vertex the jog goes round, clearly nearer the line
           if(degree[*x] == 0 && !taken_off[*x] && adjacent(*x, w) && adjacent(*x, inner) &&
-             1.5 * off_chord(*x, u, w) < off_chord(inner, u, w))
+             Feature_detection::jog_ratio * off_chord(*x, u, w) < off_chord(inner, u, w))
           {
             remove(u, inner);
             remove(inner, w);
@@ -254,6 +257,7 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
             taken_off[inner] = true;
             return true;
           }
+        }
       if(k == 3)
         for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
           if(degree[*x] == 0 && adjacent(*x, w))
