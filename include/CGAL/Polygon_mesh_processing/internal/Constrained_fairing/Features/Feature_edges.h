@@ -236,11 +236,13 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
         return true;
       }
       if(k == 2)
+      {
+        const double inner_off = off_chord(inner, u, w);
         for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
         {
-          // the other path of a diamond, nearer the line
-          if(*x != inner && degree[*x] == 2 && creases.count(sorted_edge(u, *x)) && creases.count(sorted_edge(*x, w)) &&
-             off_chord(*x, u, w) < off_chord(inner, u, w))
+          // the other path of a diamond, nearer the line (inner itself is not)
+          if(degree[*x] == 2 && creases.count(sorted_edge(u, *x)) && creases.count(sorted_edge(*x, w)) &&
+             off_chord(*x, u, w) < inner_off)
           {
             remove(u, inner);
             remove(inner, w);
@@ -248,7 +250,7 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
           }
           // the vertex the jog goes round, clearly nearer the line
           if(degree[*x] == 0 && !taken_off[*x] && adjacent(*x, w) && adjacent(*x, inner) &&
-             Feature_detection::jog_ratio * off_chord(*x, u, w) < off_chord(inner, u, w))
+             Feature_detection::jog_ratio * off_chord(*x, u, w) < inner_off)
           {
             remove(u, inner);
             remove(inner, w);
@@ -258,6 +260,7 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
             return true;
           }
         }
+      }
       if(k == 3)
         for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
           if(degree[*x] == 0 && adjacent(*x, w))
