@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the label-map benchmarks share: the soup of a label map with each point's labels, VTK's
-// clamped Laplacian to compare with, the smallest angle and the joint fairing.
+// clamped Laplacian to compare with, the smallest angle, the joint fairing and a compact map of
+// Voronoi cells.
 
 #ifndef CGAL_CONSTRAINED_FAIRING_BENCHMARK_LABEL_SOUP_H
 #define CGAL_CONSTRAINED_FAIRING_BENCHMARK_LABEL_SOUP_H
@@ -16,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -50,6 +52,37 @@ inline Soup make_soup(const std::vector<Label>& labels, const std::array<std::si
     for(std::size_t v : soup.triangles[f])
       soup.around[v].insert(soup.face_labels[f].begin(), soup.face_labels[f].end());
   return soup;
+}
+
+// A compact label map: the Voronoi cells of 10 seeds inside a ball, on n^3 cubic voxels (the
+// seeds drawn with a fixed seed, so that every run makes the same map).
+template <typename L>
+std::vector<L> voronoi_ball_labels(std::size_t n)
+{
+  const double c = double(n - 1) / 2, R = 0.43 * double(n);
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> uniform(-R / 2, R / 2);
+  std::vector<std::array<double, 3> > seeds(10);
+  for(auto& s : seeds)
+    s = {c + uniform(random), c + uniform(random), c + uniform(random)};
+  std::vector<L> labels(n * n * n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const double x = double(i), y = double(j), z = double(k);
+        if((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c) >= R * R)
+          continue;
+        double nearest = 1e300;
+        for(std::size_t s = 0; s < seeds.size(); ++s)
+        {
+          const double d = (x - seeds[s][0]) * (x - seeds[s][0]) + (y - seeds[s][1]) * (y - seeds[s][1]) +
+                           (z - seeds[s][2]) * (z - seeds[s][2]);
+          if(d < nearest)
+            nearest = d, labels[(i * n + j) * n + k] = L(s + 1);
+        }
+      }
+  return labels;
 }
 
 // VTK's constrained smoothing of surface nets: each point towards the mean of its neighbours on

@@ -29,7 +29,6 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <random>
 #include <set>
 #include <vector>
 
@@ -113,29 +112,7 @@ void ball_case(const std::array<double, 3>& spacing, int runs)
 void voronoi_case(std::size_t n, int runs)
 {
   const std::array<std::size_t, 3> size{n, n, n};
-  const double c = double(n - 1) / 2, R = 0.43 * double(n);
-  std::mt19937 random(1);
-  std::uniform_real_distribution<double> uniform(-R / 2, R / 2);
-  std::vector<std::array<double, 3> > seeds(10);
-  for(auto& s : seeds)
-    s = {c + uniform(random), c + uniform(random), c + uniform(random)};
-  std::vector<Label> labels(n * n * n, 0);
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = 0; j < n; ++j)
-      for(std::size_t k = 0; k < n; ++k)
-      {
-        const double x = double(i), y = double(j), z = double(k);
-        if((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c) >= R * R)
-          continue;
-        double nearest = 1e300;
-        for(std::size_t s = 0; s < seeds.size(); ++s)
-        {
-          const double d = (x - seeds[s][0]) * (x - seeds[s][0]) + (y - seeds[s][1]) * (y - seeds[s][1]) +
-                           (z - seeds[s][2]) * (z - seeds[s][2]);
-          if(d < nearest)
-            nearest = d, labels[(i * n + j) * n + k] = Label(s + 1);
-        }
-      }
+  const std::vector<Label> labels = voronoi_ball_labels<Label>(n);
   benchmark::reset_peak_memory();
   const auto start = std::chrono::steady_clock::now();
   const Soup soup = make_soup(labels, size, {1, 1, 1}, box_margin);

@@ -29,6 +29,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <Eigen/Geometry>
 
@@ -97,8 +98,11 @@ public:
     m_weight.resize(L);
     for(std::size_t l = 0; l < L; ++l)
       m_weight[l] = area[l] > 0 ? weight * points[l] / (area[l] * h * area[l] * h) : 0;
+    m_parts.resize(m_triangles.size());
     volumes(X0, m_targets);
     m_volumes.resize(L);
+    m_pull.resize(L);
+    list_incident(std::size_t(X0.rows()));
     m_slack = count_slack(X0, L);
   }
 
@@ -118,23 +122,29 @@ public:
   // Adds the gradient to G: a triangle's part of the volume, <p0, p1 x p2> / 6 about the
   // origin, changes by <p_(k+1) x p_(k+2), dp_k> / 6 when its corner k moves. The stiffness is
   // left as the bending energy sets it: the term acts on each label as a whole, a direction
-  // that the quasi-Newton memory learns.
+  // that the quasi-Newton memory learns. Each point gathers its triangles' parts in triangle
+  // order, so that the points run in parallel and the sums do not depend on the threads.
   double add_gradient(const Points& X, Points& G, Stiffness_and_reach*)
   {
     const double energy = value(X);
-    for(const Triangle& t : m_triangles)
-    {
-      double c = 0;
-      for(int j = 0; j < 2; ++j)
-        if(const Index s = t.sides[std::size_t(j)]; s != none)
-          c += (j == 0 ? 2 : -2) * m_weight[s] * excess(s) / 6;
-      if(c == 0)
-        continue;
-      const std::array<Eigen::Vector3d, 3> p{point(X, t.v[0]) - m_origin, point(X, t.v[1]) - m_origin,
-                                             point(X, t.v[2]) - m_origin};
-      for(std::size_t k = 0; k < 3; ++k)
-        point(G, t.v[k]) += c * p[(k + 1) % 3].cross(p[(k + 2) % 3]);
-    }
+    for(std::size_t l = 0; l < m_targets.size(); ++l)
+      m_pull[l] = 2 * m_weight[l] * excess(l) / 6;
+    parallel_for_blocks(m_first.size() - 1, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t v = begin; v < end; ++v)
+        for(std::size_t i = m_first[v]; i < m_first[v + 1]; ++i)
+        {
+          const Triangle& t = m_triangles[m_incident[i]];
+          double c = 0;
+          if(t.sides[0] != none)
+            c += m_pull[t.sides[0]];
+          if(t.sides[1] != none)
+            c += -m_pull[t.sides[1]];
+          if(c == 0)
+            continue;
+          const std::size_t k = t.v[0] == v ? 0 : t.v[1] == v ? 1 : 2;
+          point(G, v) += c * (point(X, t.v[(k + 1) % 3]) - m_origin).cross(point(X, t.v[(k + 2) % 3]) - m_origin);
+        }
+    });
     return energy;
   }
 
@@ -280,22 +290,50 @@ private:
     return closed;
   }
 
-  void volumes(const Points& X, std::vector<double>& V) const
+  // Each triangle's part computed in parallel, the parts added in triangle order.
+  void volumes(const Points& X, std::vector<double>& V)
   {
+    parallel_for_blocks(m_triangles.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        const Triangle& t = m_triangles[f];
+        m_parts[f] = (point(X, t.v[0]) - m_origin)
+                       .dot((point(X, t.v[1]) - m_origin).cross(point(X, t.v[2]) - m_origin)) / 6;
+      }
+    });
     std::fill(V.begin(), V.end(), 0.);
-    for(const Triangle& t : m_triangles)
+    for(std::size_t f = 0; f < m_triangles.size(); ++f)
     {
-      const double v = (point(X, t.v[0]) - m_origin)
-                         .dot((point(X, t.v[1]) - m_origin).cross(point(X, t.v[2]) - m_origin)) / 6;
+      const Triangle& t = m_triangles[f];
       if(t.sides[0] != none)
-        V[t.sides[0]] += v;
+        V[t.sides[0]] += m_parts[f];
       if(t.sides[1] != none)
-        V[t.sides[1]] -= v;
+        V[t.sides[1]] -= m_parts[f];
     }
+  }
+
+  // The triangles at each point, in triangle order: m_incident[m_first[v] .. m_first[v + 1])
+  // (a triangle's corners are distinct points, as the input checks).
+  void list_incident(std::size_t n)
+  {
+    m_first.assign(n + 1, 0);
+    for(const Triangle& t : m_triangles)
+      for(Index v : t.v)
+        ++m_first[v + 1];
+    for(std::size_t v = 0; v < n; ++v)
+      m_first[v + 1] += m_first[v];
+    m_incident.resize(m_first[n]);
+    std::vector<std::size_t> next(m_first.begin(), m_first.end() - 1);
+    for(std::size_t f = 0; f < m_triangles.size(); ++f)
+      for(Index v : m_triangles[f].v)
+        m_incident[next[v]++] = f;
   }
 
   std::vector<Triangle> m_triangles;
   std::vector<double> m_targets, m_volumes, m_weight, m_slack;
+  std::vector<double> m_parts, m_pull; // each triangle's part of its labels' volumes; each label's gradient factor
+  std::vector<std::size_t> m_first;
+  std::vector<std::size_t> m_incident;
   Eigen::Vector3d m_origin = Eigen::Vector3d::Zero();
 };
 
