@@ -62,7 +62,8 @@ double box_margin = PMP::label_box_margin;
 // The compact map's time per iteration and triangle, once it is known.
 double compact_time = 0;
 
-void judge(const Map& map)
+// Fairs and judges `map`; `compact`: it is the compact map that the others' times are compared with.
+void judge(const Map& map, bool compact = false)
 {
   std::vector<Point> points;
   std::vector<std::array<std::size_t, 3> > triangles;
@@ -110,18 +111,18 @@ void judge(const Map& map)
     inward += !(PMP::volume(mesh) > 0);
     crossing += PMP::does_self_intersect(mesh);
   }
+  const double per_iteration = seconds / double(std::max<std::size_t>(result.number_of_iterations, 1));
   std::cout << std::left << std::setw(44) << map.name << std::right << std::setw(5) << labels.size() << std::setw(9)
             << triangles.size() << std::setw(6) << open << std::setw(6) << split << std::setw(7) << inward
             << std::setw(7) << crossing << std::setw(7) << coincident << std::setw(7) << outside << std::setw(7)
             << std::setprecision(3) << smallest << std::setw(6) << result.number_of_iterations << std::setw(8)
-            << std::setprecision(3) << seconds / double(std::max<std::size_t>(result.number_of_iterations, 1))
-            << std::setw(8) << std::setprecision(4) << seconds << std::setw(7) << result.number_of_energy_evaluations;
-  const double per_triangle = seconds / double(std::max<std::size_t>(result.number_of_iterations, 1)) /
-                              double(triangles.size());
-  if(compact_time > 0)
-    std::cout << std::setw(9) << std::setprecision(3) << per_triangle / compact_time;
-  else
+            << std::setprecision(3) << per_iteration << std::setw(8) << std::setprecision(4) << seconds << std::setw(7)
+            << result.number_of_energy_evaluations;
+  const double per_triangle = per_iteration / double(triangles.size());
+  if(compact)
     compact_time = per_triangle;
+  else if(compact_time > 0)
+    std::cout << std::setw(9) << std::setprecision(3) << per_triangle / compact_time;
   std::cout << (result ? "" : "  " + result.message) << std::endl;
 }
 
@@ -147,7 +148,8 @@ int main(int argc, char* argv[])
             << std::endl;
   if(const auto n = std::size_t(std::stoi(arguments.option("compact", "256"))); n > 0)
     judge(Map{"compact: 10 Voronoi labels, " + std::to_string(n) + "^3", {n, n, n}, {1, 1, 1},
-              label_soup::voronoi_ball_labels<Label>(n)});
+              label_soup::voronoi_ball_labels<Label>(n)},
+          true);
   std::vector<std::string> files(arguments.positional.begin(), arguments.positional.end());
   if(files.empty())
   {

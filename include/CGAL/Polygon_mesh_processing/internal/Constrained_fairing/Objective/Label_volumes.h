@@ -326,14 +326,14 @@ private:
     std::vector<std::size_t> next(m_first.begin(), m_first.end() - 1);
     for(std::size_t f = 0; f < m_triangles.size(); ++f)
       for(Index v : m_triangles[f].v)
-        m_incident[next[v]++] = f;
+        m_incident[next[v]++] = Index(f);
   }
 
   std::vector<Triangle> m_triangles;
   std::vector<double> m_targets, m_volumes, m_weight, m_slack;
   std::vector<double> m_parts, m_pull; // each triangle's part of its labels' volumes; each label's gradient factor
   std::vector<std::size_t> m_first;
-  std::vector<std::size_t> m_incident;
+  std::vector<Index> m_incident;
   Eigen::Vector3d m_origin = Eigen::Vector3d::Zero();
 };
 
