@@ -212,6 +212,19 @@ void check_label_volumes()
       open_triangles.push_back(triangles[f]), open_sides.push_back(sides[f]);
   CHECK(CF::Label_volumes(open_triangles, open_sides, X0, 1).size() == 2);
 
+  // No label closed (one interface of two labels, open): the term is zero and adds nothing.
+  std::vector<std::array<CF::Index, 3> > sheet;
+  std::vector<std::array<CF::Index, 2> > sheet_sides;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    if(sides[f] == std::array<CF::Index, 2>{0, 3})
+      sheet.push_back(triangles[f]), sheet_sides.push_back({0, 1});
+  sheet.pop_back(), sheet_sides.pop_back();
+  CF::Label_volumes none_closed(sheet, sheet_sides, X0, 1);
+  CHECK(none_closed.size() == 0);
+  CF::Points G_none = CF::Points::Constant(X.rows(), 3, 0.5);
+  CHECK(none_closed.add_gradient(X, G_none, nullptr) == 0 && none_closed.value(X) == 0);
+  CHECK((G_none.array() == 0.5).all());
+
   // A block of 6 x 6 x 6 voxels: six caps of 36 voxel faces, each off by a uniform fraction of
   // the spacing, a standard deviation of 36 / sqrt(12) each.
   const std::array<std::size_t, 3> size{10, 10, 10};

@@ -28,6 +28,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_LABEL_VOLUMES_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
@@ -37,6 +38,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -102,7 +104,13 @@ public:
     volumes(X0, m_targets);
     m_volumes.resize(L);
     m_pull.resize(L);
-    list_incident(std::size_t(X0.rows()));
+    // the triangles at each point, in triangle order (a triangle's corners are distinct points,
+    // as the input checks)
+    m_incident.emplace(std::size_t(X0.rows()), [&](const auto& add) {
+      for(std::size_t f = 0; f < m_triangles.size(); ++f)
+        for(Index v : m_triangles[f].v)
+          add(v, Index(f));
+    });
     m_slack = count_slack(X0, L);
   }
 
@@ -126,14 +134,16 @@ public:
   // order, so that the points run in parallel and the sums do not depend on the threads.
   double add_gradient(const Points& X, Points& G, Stiffness_and_reach*)
   {
+    if(m_targets.empty())
+      return 0; // no closed label: the term is zero
     const double energy = value(X);
     for(std::size_t l = 0; l < m_targets.size(); ++l)
       m_pull[l] = 2 * m_weight[l] * excess(l) / 6;
-    parallel_for_blocks(m_first.size() - 1, [&](std::size_t begin, std::size_t end, std::size_t) {
+    parallel_for_blocks(m_incident->first.size() - 1, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t v = begin; v < end; ++v)
-        for(std::size_t i = m_first[v]; i < m_first[v + 1]; ++i)
+        for(auto f = m_incident->begin(v); f != m_incident->end(v); ++f)
         {
-          const Triangle& t = m_triangles[m_incident[i]];
+          const Triangle& t = m_triangles[*f];
           double c = 0;
           if(t.sides[0] != none)
             c += m_pull[t.sides[0]];
@@ -312,28 +322,10 @@ private:
     }
   }
 
-  // The triangles at each point, in triangle order: m_incident[m_first[v] .. m_first[v + 1])
-  // (a triangle's corners are distinct points, as the input checks).
-  void list_incident(std::size_t n)
-  {
-    m_first.assign(n + 1, 0);
-    for(const Triangle& t : m_triangles)
-      for(Index v : t.v)
-        ++m_first[v + 1];
-    for(std::size_t v = 0; v < n; ++v)
-      m_first[v + 1] += m_first[v];
-    m_incident.resize(m_first[n]);
-    std::vector<std::size_t> next(m_first.begin(), m_first.end() - 1);
-    for(std::size_t f = 0; f < m_triangles.size(); ++f)
-      for(Index v : m_triangles[f].v)
-        m_incident[next[v]++] = Index(f);
-  }
-
   std::vector<Triangle> m_triangles;
   std::vector<double> m_targets, m_volumes, m_weight, m_slack;
   std::vector<double> m_parts, m_pull; // each triangle's part of its labels' volumes; each label's gradient factor
-  std::vector<std::size_t> m_first;
-  std::vector<Index> m_incident;
+  std::optional<Rows_by_vertex<Index> > m_incident;
   Eigen::Vector3d m_origin = Eigen::Vector3d::Zero();
 };
 
