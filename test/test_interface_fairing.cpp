@@ -16,6 +16,9 @@
 //    whose surface is not closed is not held, the slack of a block of voxels is that of its six
 //    faces; on a torus whose tube is 5 voxels across the faired surface lies inside the raw nets
 //    on average (the bending energy alone kept it at or outside them);
+//  - the crossing search of the repair (Crossing_repair.h) against every pair tested with CGAL's
+//    do_intersect, over all pairs and over the pairs with a few changed triangles, on triangles
+//    of sizes over three orders of magnitude;
 //  - bad soups and values are rejected with their defect, the points left bit-identical.
 
 #include "ball_phantom.h"
@@ -24,6 +27,7 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 
@@ -281,6 +285,60 @@ void check_thin_tube()
   CHECK(mean(points) < mean(soup.points));
 }
 
+// Triangles of their own points (none shared), of sizes from 0.002 to 2 in a unit cube: the
+// crossings found, over all pairs and over the pairs with the changed triangles, are those of
+// CGAL's do_intersect over every pair.
+void check_crossing_search()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0, 1), side(-1, 1);
+  const std::size_t m = 600;
+  CF::Points X(Eigen::Index(3 * m), 3);
+  std::vector<std::array<CF::Index, 3> > triangles(m);
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    const double size = 0.002 * std::pow(1000., unit(random));
+    const double c[3] = {unit(random), unit(random), unit(random)};
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      triangles[f][k] = CF::Index(3 * f + k);
+      for(int a = 0; a < 3; ++a)
+        X(Eigen::Index(3 * f + k), a) = c[a] + size * side(random);
+    }
+  }
+  const auto triangle = [&](std::size_t f) {
+    const auto p = [&](CF::Index v) { return K::Point_3(X(v, 0), X(v, 1), X(v, 2)); };
+    return K::Triangle_3(p(triangles[f][0]), p(triangles[f][1]), p(triangles[f][2]));
+  };
+  std::vector<std::vector<bool> > meets(m, std::vector<bool>(m, false));
+  for(std::size_t f = 0; f < m; ++f)
+    for(std::size_t g = f + 1; g < m; ++g)
+      meets[f][g] = meets[g][f] = CGAL::do_intersect(triangle(f), triangle(g));
+  const CF::Triangle_crossings crossings(triangles);
+  std::size_t found = 0;
+  for(const std::size_t every : {0, 2, 37, 211})
+  {
+    std::vector<bool> changed;
+    if(every > 0)
+      for(std::size_t f = 0; f < m; ++f)
+        changed.push_back(f % every == 0);
+    const std::vector<bool> crossing = crossings.find(X, changed);
+    for(std::size_t f = 0; f < m; ++f)
+    {
+      bool expected = false;
+      for(std::size_t g = 0; g < m; ++g)
+        expected = expected || (meets[f][g] && (changed.empty() || changed[f] || changed[g]));
+      CHECK(crossing[f] == expected);
+      found += crossing[f];
+    }
+  }
+  std::cout << "  crossing search: " << found << " crossing triangles found as every pair's test finds them"
+            << std::endl;
+  CHECK(found > 0);
+}
+
 // A call that must fail with `defect`, leaving the points as they were.
 template <typename NamedParameters>
 void check_rejected(std::vector<Point> points, const std::vector<Triangle>& triangles,
@@ -327,6 +385,7 @@ int main()
   check_fairing({1, 1, 3});
   check_label_volumes();
   check_thin_tube();
+  check_crossing_search();
   check_bad_input();
   return test::report("test_interface_fairing");
 }

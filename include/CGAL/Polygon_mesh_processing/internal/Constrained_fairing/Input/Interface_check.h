@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Face_corners.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 
 #include <algorithm>
 #include <array>
@@ -39,11 +40,12 @@ struct Interface_side
   bool same_edge(const Interface_side& o) const { return a == o.a && b == o.b; }
 };
 
-// The sides of the triangles, sorted by edge, then interface, then triangle; `interface_of[f]`
-// numbers triangle f's pair of labels, `flipped[f]` says whether its labels run from the larger.
+// The sides of the triangles of a surface of `n` points, sorted by edge (a counting sort on its
+// first point), then interface, then triangle; `interface_of[f]` numbers triangle f's pair of
+// labels, `flipped[f]` says whether its labels run from the larger.
 template <typename TriangleRange>
-std::vector<Interface_side> interface_sides(const TriangleRange& triangles, const std::vector<std::size_t>& interface_of,
-                                            const std::vector<bool>& flipped)
+std::vector<Interface_side> interface_sides(std::size_t n, const TriangleRange& triangles,
+                                            const std::vector<std::size_t>& interface_of, const std::vector<bool>& flipped)
 {
   std::vector<Interface_side> sides;
   sides.reserve(3 * triangles.size());
@@ -53,9 +55,8 @@ std::vector<Interface_side> interface_sides(const TriangleRange& triangles, cons
       const std::size_t s = std::size_t(triangles[f][c]), t = std::size_t(triangles[f][(c + 1) % 3]);
       sides.push_back({(std::min)(s, t), (std::max)(s, t), interface_of[f], f, (s < t) != flipped[f]});
     }
-  std::sort(sides.begin(), sides.end(), [](const Interface_side& x, const Interface_side& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.interface != y.interface ? x.interface < y.interface
-                                                                                       : x.face < y.face;
+  sort_by_vertex(sides, n, [](const Interface_side& x) { return x.a; }, [](const Interface_side& x, const Interface_side& y) {
+    return x.b != y.b ? x.b < y.b : x.interface != y.interface ? x.interface < y.interface : x.face < y.face;
   });
   return sides;
 }
@@ -99,7 +100,7 @@ Input_error interface_error(std::size_t n, const TriangleRange& triangles, const
     flipped[order[r]] = face_labels[order[r]][1] < face_labels[order[r]][0];
   }
 
-  sides = interface_sides(triangles, interface_of, flipped);
+  sides = interface_sides(n, triangles, interface_of, flipped);
   for(std::size_t i = 0, j = 0; i < sides.size(); i = j)
   {
     while(j < sides.size() && sides[j].same_edge(sides[i]) && sides[j].interface == sides[i].interface)

@@ -59,7 +59,7 @@ public:
     Index labels = 0;
     for(const auto& s : sides)
       labels = (std::max)(labels, Index((std::max)(s[0], s[1]) + 1));
-    const std::vector<bool> closed = closed_labels(triangles, sides, labels);
+    const std::vector<bool> closed = closed_labels(triangles, sides, labels, std::size_t(X0.rows()));
     std::vector<Index> slot(labels, none);
     for(Index l = 0; l < labels; ++l)
       if(closed[l])
@@ -92,7 +92,8 @@ public:
         if(s != none)
           for(Index v : t.v)
             label_points.emplace_back(s, v);
-    std::sort(label_points.begin(), label_points.end());
+    sort_by_vertex(label_points, std::size_t(X0.rows()), [](const auto& lp) { return lp.second; },
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
     label_points.erase(std::unique(label_points.begin(), label_points.end()), label_points.end());
     std::vector<double> points(L, 0.);
     for(const auto& lp : label_points)
@@ -220,7 +221,8 @@ private:
           const Index a = m_triangles[f].v[k], b = m_triangles[f].v[(k + 1) % 3];
           edges.emplace_back((std::min)(a, b), (std::max)(a, b), f);
         }
-    std::sort(edges.begin(), edges.end());
+    sort_by_vertex(edges, std::size_t(X0.rows()), [](const auto& e) { return std::get<0>(e); },
+                   [](const auto& a, const auto& b) { return a < b; });
     for(std::size_t i = 0; i + 1 < edges.size(); ++i)
       if(std::get<0>(edges[i]) == std::get<0>(edges[i + 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i + 1]))
       {
@@ -273,9 +275,10 @@ private:
   // A label's surface is closed if each of its edges is run through as often one way as the
   // other by its triangles, turned to face out of the label.
   static std::vector<bool> closed_labels(const std::vector<std::array<Index, 3> >& triangles,
-                                         const std::vector<std::array<Index, 2> >& sides, Index labels)
+                                         const std::vector<std::array<Index, 2> >& sides, Index labels,
+                                         std::size_t number_of_points)
   {
-    std::vector<std::tuple<Index, Index, Index, int> > edges; // label, smaller and larger end, way
+    std::vector<std::tuple<Index, Index, Index, int> > edges; // smaller and larger end, label, way
     edges.reserve(6 * triangles.size());
     for(std::size_t f = 0; f < triangles.size(); ++f)
       for(int j = 0; j < 2; ++j)
@@ -283,9 +286,10 @@ private:
         {
           const Index a = triangles[f][k], b = triangles[f][(k + 1) % 3];
           const int way = (a < b) == (j == 0) ? 1 : -1;
-          edges.emplace_back(sides[f][std::size_t(j)], (std::min)(a, b), (std::max)(a, b), way);
+          edges.emplace_back((std::min)(a, b), (std::max)(a, b), sides[f][std::size_t(j)], way);
         }
-    std::sort(edges.begin(), edges.end());
+    sort_by_vertex(edges, number_of_points, [](const auto& e) { return std::get<0>(e); },
+                   [](const auto& a, const auto& b) { return a < b; });
     std::vector<bool> closed(labels, true);
     for(std::size_t i = 0, j = 0; i < edges.size(); i = j)
     {
@@ -295,7 +299,7 @@ private:
           ++j)
         balance += std::get<3>(edges[j]);
       if(balance != 0)
-        closed[std::get<0>(edges[i])] = false;
+        closed[std::get<2>(edges[i])] = false;
     }
     return closed;
   }

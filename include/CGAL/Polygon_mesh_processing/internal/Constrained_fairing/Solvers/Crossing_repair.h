@@ -23,8 +23,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
+#include <CGAL/tags.h>
 
+#include <algorithm>
 #include <array>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <vector>
 
@@ -56,20 +61,88 @@ public:
       if(!changed.empty() && changed[f])
         some.push_back(all.back());
     }
-    std::vector<bool> crossing(m_triangles.size(), false);
+    // Flags that the threads of the box intersection set: the set found does not depend on the
+    // order of the pairs, as a pair is skipped only when both its triangles cross already.
+    std::vector<std::atomic<bool> > flags(m_triangles.size());
+    for(auto& flag : flags)
+      flag.store(false, std::memory_order_relaxed);
     const auto test = [&](const Box& a, const Box& b) {
       const std::size_t f = a.info(), g = b.info();
-      if(f != g && (!crossing[f] || !crossing[g]) && cross(X, m_triangles[f], m_triangles[g]))
-        crossing[f] = crossing[g] = true;
+      if(f != g && (!flags[f].load(std::memory_order_relaxed) || !flags[g].load(std::memory_order_relaxed)) &&
+         cross(X, m_triangles[f], m_triangles[g]))
+      {
+        flags[f].store(true, std::memory_order_relaxed);
+        flags[g].store(true, std::memory_order_relaxed);
+      }
     };
+    // The cutoff under which the boxes are tested pairwise is CGAL's self-intersection test's:
+    // at the default of 10, the segment tree's recursion took twice as long on a million
+    // triangles.
+    const std::ptrdiff_t cutoff = 2000;
     if(changed.empty())
-      box_self_intersection_d(all.begin(), all.end(), test);
+      box_self_intersection_d<Parallel_if_available_tag>(all.begin(), all.end(), test, cutoff);
     else if(!some.empty())
-      box_intersection_d(some.begin(), some.end(), all.begin(), all.end(), test);
+    {
+      std::vector<Box> near = boxes_near(some, all);
+      box_intersection_d<Parallel_if_available_tag>(some.begin(), some.end(), near.begin(), near.end(), test, cutoff);
+    }
+    std::vector<bool> crossing(m_triangles.size());
+    for(std::size_t f = 0; f < m_triangles.size(); ++f)
+      crossing[f] = flags[f].load(std::memory_order_relaxed);
     return crossing;
   }
 
 private:
+  // The boxes of `all` that may meet one of `some`: those that meet a cell of a grid that one of
+  // `some` meets, the cells as large as the largest of `some`. A pass over `all` with a few
+  // lookups each: the repair's rounds change a few triangles, and the box intersection with all
+  // of them sorted every box in every round (5 s of Harvard-Oxford's repair).
+  static std::vector<Box> boxes_near(const std::vector<Box>& some, const std::vector<Box>& all)
+  {
+    double size = 0;
+    for(const Box& b : some)
+      for(int c = 0; c < 3; ++c)
+        size = (std::max)(size, b.max_coord(c) - b.min_coord(c));
+    if(!(size > 0) || !std::isfinite(size))
+      return all;
+    using Cell = std::array<std::int64_t, 3>;
+    // clamped, which keeps the cells of boxes that meet in common
+    const auto cell = [size](double x) { return std::int64_t((std::max)(-1e15, (std::min)(1e15, std::floor(x / size)))); };
+    const auto cells = [&cell](const Box& b, Cell& lo, Cell& hi) {
+      for(int c = 0; c < 3; ++c)
+      {
+        lo[std::size_t(c)] = cell(b.min_coord(c));
+        hi[std::size_t(c)] = cell(b.max_coord(c));
+      }
+      return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+    };
+    std::vector<Cell> marked;
+    Cell lo, hi, k;
+    for(const Box& b : some)
+    {
+      cells(b, lo, hi);
+      for(k[0] = lo[0]; k[0] <= hi[0]; ++k[0])
+        for(k[1] = lo[1]; k[1] <= hi[1]; ++k[1])
+          for(k[2] = lo[2]; k[2] <= hi[2]; ++k[2])
+            marked.push_back(k);
+    }
+    std::sort(marked.begin(), marked.end());
+    marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
+    std::vector<Box> near;
+    for(const Box& b : all)
+    {
+      // a box over many cells (a long triangle) is kept without looking them up
+      bool meets = cells(b, lo, hi) > 64;
+      for(k[0] = lo[0]; !meets && k[0] <= hi[0]; ++k[0])
+        for(k[1] = lo[1]; !meets && k[1] <= hi[1]; ++k[1])
+          for(k[2] = lo[2]; !meets && k[2] <= hi[2]; ++k[2])
+            meets = std::binary_search(marked.begin(), marked.end(), k);
+      if(meets)
+        near.push_back(b);
+    }
+    return near;
+  }
+
   Box box(const Points& X, std::size_t f) const
   {
     double lo[3], hi[3];
