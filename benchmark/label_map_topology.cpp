@@ -115,8 +115,8 @@ void judge(const Map& map, bool compact = false)
   std::cout << std::left << std::setw(44) << map.name << std::right << std::setw(5) << labels.size() << std::setw(9)
             << triangles.size() << std::setw(6) << open << std::setw(6) << split << std::setw(7) << inward
             << std::setw(7) << crossing << std::setw(7) << coincident << std::setw(7) << outside << std::setw(7)
-            << std::setprecision(3) << smallest << std::setw(6) << result.number_of_iterations << std::setw(8)
-            << std::setprecision(3) << per_iteration << std::setw(8) << std::setprecision(4) << seconds << std::setw(7)
+            << std::setprecision(3) << smallest << std::setw(6) << result.number_of_iterations << std::setw(10)
+            << std::setprecision(3) << per_iteration << std::setw(9) << std::setprecision(4) << seconds << std::setw(7)
             << result.number_of_energy_evaluations;
   const double per_triangle = per_iteration / double(triangles.size());
   if(compact)
@@ -144,7 +144,7 @@ int main(int argc, char* argv[])
   box_margin = std::stod(arguments.option("margin", std::to_string(PMP::label_box_margin)));
   std::cout << benchmark::machine_description() << ", boxes' margin " << box_margin << "\n"
             << std::left << std::setw(44) << "map" << std::right
-            << "labels triangles open split inward crossing coinc. outside angle iter. s/iter total s evals /compact"
+            << "labels triangles  open split inward crossing coinc. outside  angle iter.    s/iter  total s  evals  /compact"
             << std::endl;
   if(const auto n = std::size_t(std::stoi(arguments.option("compact", "256"))); n > 0)
     judge(Map{"compact: 10 Voronoi labels, " + std::to_string(n) + "^3", {n, n, n}, {1, 1, 1},
