@@ -114,7 +114,7 @@ private:
         lo[std::size_t(c)] = cell(b.min_coord(c));
         hi[std::size_t(c)] = cell(b.max_coord(c));
       }
-      return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+      return double(hi[0] - lo[0] + 1) * double(hi[1] - lo[1] + 1) * double(hi[2] - lo[2] + 1);
     };
     std::vector<Cell> marked;
     Cell lo, hi, k;
