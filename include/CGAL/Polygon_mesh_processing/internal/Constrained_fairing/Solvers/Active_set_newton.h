@@ -90,7 +90,8 @@ public:
       }
 
       const auto sufficient = [&](double e, const Points& Y) {
-        return e < E + sufficient_decrease * (m_G.cwiseProduct(Y - X)).sum();
+        // never above E, whatever the sign of the step's slope (Projected_lbfgs.h)
+        return e < E + sufficient_decrease * (std::min)(0., (m_G.cwiseProduct(Y - X)).sum());
       };
       m_D.noalias() = -m_G;
       Projected_line_search::Accepted cauchy{m_Y};
