@@ -4,7 +4,9 @@
 // Meshes with 5 % of their triangles made degenerate (collinear vertices, duplicated vertices,
 // all three vertices at one point) are faired like any other: no NaN, the bound holds exactly,
 // the energy is finite, never rises and falls as on any noisy mesh, no new degenerate triangle
-// appears, and two runs give bit-identical results.
+// appears, and two runs give bit-identical results. And loose triangles whose coordinates span
+// 1e-41 to 1e37 (an input the fuzzer found): the energy never rises, whatever the number of
+// iterations allowed.
 
 #include "test_support.h"
 
@@ -70,6 +72,29 @@ void check_fairing(const Mesh& clean, const std::string& name, Deviation_bound s
   CHECK(test::identical(test::points(second), output));
 }
 
+// The fuzzer's octahedron of eight loose triangles at extreme coordinates, in a ball of a quarter
+// of its mean edge length (1.1e36), cut after 1 to 12 iterations: the line search's slope came
+// out positive there and let the energy rise from 19,329 to 28,330.
+void check_extreme_coordinates()
+{
+  Mesh mesh;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_SOURCE_DIR) +
+                                      "/test/fuzz/corpus/octahedron_extreme_coordinates.stl",
+                                    mesh));
+  double sum = 0;
+  for(auto e : edges(mesh))
+    sum += std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+  const double epsilon = 0.25 * sum / double(num_edges(mesh));
+  for(unsigned int iterations = 1; iterations <= 12; ++iterations)
+  {
+    Mesh faired = mesh;
+    const auto result = PMP::constrained_fairing(
+      faired, epsilon, CFP::deviation_bound(Deviation_bound::BALL).number_of_iterations(iterations));
+    CHECK(result);
+    CHECK(result.final_energy <= result.initial_energy);
+  }
+}
+
 int main()
 {
   const Mesh sphere = test::icosphere(3);
@@ -82,5 +107,6 @@ int main()
     check_fairing(elephant, "elephant.off", shape);
     check_fairing(head, "head.off (border)", shape);
   }
+  check_extreme_coordinates();
   return test::report("test_degenerate_geometry");
 }
