@@ -90,12 +90,11 @@ public:
       }
 
       const auto sufficient = [&](double e, const Points& Y) {
-        // never above E, whatever the sign of the step's slope (Projected_lbfgs.h)
-        return e < E + sufficient_decrease * (std::min)(0., (m_G.cwiseProduct(Y - X)).sum());
+        return e < E + sufficient_decrease * (m_G.cwiseProduct(Y - X)).sum();
       };
       m_D.noalias() = -m_G;
       Projected_line_search::Accepted cauchy{m_Y};
-      if(!m_search.search(X, m_D, t_cauchy, m_bound, m_energy, sufficient, cauchy))
+      if(!m_search.search(X, E, m_D, t_cauchy, m_bound, m_energy, sufficient, cauchy))
       {
         // No point of the projected gradient path decreases the energy: X is stationary
         // up to rounding.
@@ -114,10 +113,9 @@ public:
           report.message = "the sparse linear solver failed in a Newton step";
           break;
         }
-        const double E_y = cauchy.energy;
-        const auto decreases = [&](double e, const Points&) { return e < E_y; };
+        const auto decreases = [](double, const Points&) { return true; }; // below the Cauchy point's
         Projected_line_search::Accepted subspace{m_Z};
-        if(m_search.search(m_Y, m_D, t_newton, m_bound, m_energy, decreases, subspace))
+        if(m_search.search(m_Y, cauchy.energy, m_D, t_newton, m_bound, m_energy, decreases, subspace))
         {
           t_newton = subspace.step;
           m_Y.swap(m_Z);

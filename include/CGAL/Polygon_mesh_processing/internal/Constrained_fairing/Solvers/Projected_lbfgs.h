@@ -46,7 +46,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Stopping_rule.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Surface_motion.h>
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -121,10 +120,8 @@ public:
         slope = finish_direction(false);
       }
 
-      // Never above E: the projection, or rounding at extreme coordinates, can make the slope of
-      // the step taken <G, Y - X> positive.
       const auto sufficient = [&](double e, const Points& Y) {
-        return e < E + sufficient_decrease * (std::min)(0., dot_with_difference(m_G, Y, X, m_partial));
+        return e < E + sufficient_decrease * dot_with_difference(m_G, Y, X, m_partial);
       };
       Projected_line_search::Accepted accepted{m_X};
       if(!m_search.backtrack(X, m_D, 1., E, slope, m_bound, m_energy, sufficient, accepted, m_G_next, m_scales_next))

@@ -3,7 +3,10 @@
 //
 // The search for a good point on a projected ray r(t) = P(x + t v) (Section 4). The accepted
 // point goes to a buffer the caller owns (swapped in, so that no call allocates once the
-// buffers have their sizes).
+// buffers have their sizes). Whatever the caller's condition, an accepted point's energy is
+// below E0, the energy at x: with the projection, or rounding at extreme coordinates, a
+// sufficient decrease measured by the slope of the step taken can come out positive and allow
+// a rise.
 //  - search(): the paper's rule. From an initial guess t0 (the previous iteration's step),
 //    double t while the descent condition holds, or halve it until it holds. Doubling also
 //    stops as soon as the energy no longer improves on the last accepted point, so that a
@@ -58,20 +61,20 @@ public:
     double step = 0;
   };
 
-  // The paper's search from t0. `holds(energy, point)` is the descent condition. Returns
-  // true and fills `accepted` on success.
+  // The paper's search from t0, from x of energy E0. `holds(energy, point)` is the descent
+  // condition. Returns true and fills `accepted` on success.
   template <typename Bound, typename Objective, typename Condition>
-  bool search(const Points& x, const Points& v, double t0, const Bound& bound, Objective& energy,
+  bool search(const Points& x, double E0, const Points& v, double t0, const Bound& bound, Objective& energy,
               const Condition& holds, Accepted& accepted)
   {
     double t = t0;
-    if(try_step(x, v, t, bound, energy, holds))
+    if(try_step(x, E0, v, t, bound, energy, holds))
     {
       accept(t, accepted);
       for(int k = 0; k < max_doublings; ++k)
       {
         t *= 2;
-        if(!try_step(x, v, t, bound, energy, holds) || !(m_trial_energy < accepted.energy))
+        if(!try_step(x, E0, v, t, bound, energy, holds) || !(m_trial_energy < accepted.energy))
           break;
         accept(t, accepted);
       }
@@ -80,7 +83,7 @@ public:
     for(int k = 0; k < max_halvings; ++k)
     {
       t /= 2;
-      if(try_step(x, v, t, bound, energy, holds))
+      if(try_step(x, E0, v, t, bound, energy, holds))
       {
         accept(t, accepted);
         return true;
@@ -106,7 +109,7 @@ public:
       {
         ++m_evaluations;
         const double e = energy.value_and_gradient(accepted.point, G, &scales);
-        if(holds(e, accepted.point))
+        if(e < E0 && holds(e, accepted.point))
         {
           accepted.energy = e;
           accepted.step = t;
@@ -127,14 +130,14 @@ public:
 
 private:
   template <typename Bound, typename Objective, typename Condition>
-  bool try_step(const Points& x, const Points& v, double t, const Bound& bound, Objective& energy,
+  bool try_step(const Points& x, double E0, const Points& v, double t, const Bound& bound, Objective& energy,
                 const Condition& holds)
   {
     if(!projected_step_to(m_trial, x, t, v, bound)) // a step so long that it overflows is no candidate
       return false;
     ++m_evaluations;
     m_trial_energy = energy.value(m_trial);
-    return holds(m_trial_energy, m_trial);
+    return m_trial_energy < E0 && holds(m_trial_energy, m_trial);
   }
 
   // y = P(x + t v) in one pass, each block projected as soon as it is computed; false if a
