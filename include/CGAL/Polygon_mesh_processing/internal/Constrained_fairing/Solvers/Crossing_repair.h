@@ -6,30 +6,19 @@
 // of a label map apart (label_surface_nets()), but not the triangles between them: where two
 // sheets of a surface are pressed within their boxes (a ribbon one voxel thick, sheets that meet
 // at a junction), a faired triangle may pass through another. The repair finds the crossing
-// triangles (exactly, with the predicates of CGAL's self-intersection test: two triangles that
-// share an edge cross when they fold onto each other, two that share a point when the side of one
-// opposite it meets the other, others when they meet; a triangle collapsed to a segment crosses
-// any other near it) and pulls their points halfway back towards
-// where they started, round after round, a point that was pulled crossing_repair_rounds times all
-// the way: the points end between where the descent left them and where they started, within
-// their bounds, which are convex, and every crossing goes but those of triangles that crossed at
-// the start already.
+// triangles (Triangle_crossings.h) and pulls their points halfway back towards where they
+// started, round after round, a point that was pulled crossing_repair_rounds times all the way:
+// the points end between where the descent left them and where they started, within their
+// bounds, which are convex, and every crossing goes but those of triangles that crossed at the
+// start already.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
-#include <CGAL/intersections.h>
-#include <CGAL/tags.h>
-
-#include <algorithm>
 #include <array>
-#include <atomic>
-#include <cmath>
-#include <cstdint>
 #include <cstddef>
 #include <vector>
 
@@ -40,158 +29,6 @@ namespace Constrained_fairing {
 
 // The halfway pulls of a point before it is pulled back all the way.
 constexpr std::size_t crossing_repair_rounds = 6;
-
-class Triangle_crossings
-{
-  using Kernel = Exact_predicates_inexact_constructions_kernel;
-  using Box = Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
-
-public:
-  explicit Triangle_crossings(const std::vector<std::array<Index, 3> >& triangles) : m_triangles(triangles) {}
-
-  // Whether each triangle crosses another in X, among the pairs with one of the `changed`
-  // triangles (all where `changed` is empty).
-  std::vector<bool> find(const Points& X, const std::vector<bool>& changed) const
-  {
-    std::vector<Box> all, some;
-    all.reserve(m_triangles.size());
-    for(std::size_t f = 0; f < m_triangles.size(); ++f)
-    {
-      all.push_back(box(X, f));
-      if(!changed.empty() && changed[f])
-        some.push_back(all.back());
-    }
-    // Flags that the threads of the box intersection set: the set found does not depend on the
-    // order of the pairs, as a pair is skipped only when both its triangles cross already.
-    std::vector<std::atomic<bool> > flags(m_triangles.size());
-    for(auto& flag : flags)
-      flag.store(false, std::memory_order_relaxed);
-    const auto test = [&](const Box& a, const Box& b) {
-      const std::size_t f = a.info(), g = b.info();
-      if(f != g && (!flags[f].load(std::memory_order_relaxed) || !flags[g].load(std::memory_order_relaxed)) &&
-         cross(X, m_triangles[f], m_triangles[g]))
-      {
-        flags[f].store(true, std::memory_order_relaxed);
-        flags[g].store(true, std::memory_order_relaxed);
-      }
-    };
-    // The cutoff under which the boxes are tested pairwise is CGAL's self-intersection test's:
-    // at the default of 10, the segment tree's recursion took twice as long on a million
-    // triangles.
-    const std::ptrdiff_t cutoff = 2000;
-    if(changed.empty())
-      box_self_intersection_d<Parallel_if_available_tag>(all.begin(), all.end(), test, cutoff);
-    else if(!some.empty())
-    {
-      std::vector<Box> near = boxes_near(some, all);
-      box_intersection_d<Parallel_if_available_tag>(some.begin(), some.end(), near.begin(), near.end(), test, cutoff);
-    }
-    std::vector<bool> crossing(m_triangles.size());
-    for(std::size_t f = 0; f < m_triangles.size(); ++f)
-      crossing[f] = flags[f].load(std::memory_order_relaxed);
-    return crossing;
-  }
-
-private:
-  // The boxes of `all` that may meet one of `some`: those that meet a cell of a grid that one of
-  // `some` meets, the cells as large as the largest of `some`. A pass over `all` with a few
-  // lookups each: the repair's rounds change a few triangles, and the box intersection with all
-  // of them sorted every box in every round (5 s of Harvard-Oxford's repair).
-  static std::vector<Box> boxes_near(const std::vector<Box>& some, const std::vector<Box>& all)
-  {
-    double size = 0;
-    for(const Box& b : some)
-      for(int c = 0; c < 3; ++c)
-        size = (std::max)(size, b.max_coord(c) - b.min_coord(c));
-    if(!(size > 0) || !std::isfinite(size))
-      return all;
-    using Cell = std::array<std::int64_t, 3>;
-    // clamped, which keeps the cells of boxes that meet in common
-    const auto cell = [size](double x) { return std::int64_t((std::max)(-1e15, (std::min)(1e15, std::floor(x / size)))); };
-    const auto cells = [&cell](const Box& b, Cell& lo, Cell& hi) {
-      for(int c = 0; c < 3; ++c)
-      {
-        lo[std::size_t(c)] = cell(b.min_coord(c));
-        hi[std::size_t(c)] = cell(b.max_coord(c));
-      }
-      return double(hi[0] - lo[0] + 1) * double(hi[1] - lo[1] + 1) * double(hi[2] - lo[2] + 1);
-    };
-    std::vector<Cell> marked;
-    Cell lo, hi, k;
-    for(const Box& b : some)
-    {
-      cells(b, lo, hi);
-      for(k[0] = lo[0]; k[0] <= hi[0]; ++k[0])
-        for(k[1] = lo[1]; k[1] <= hi[1]; ++k[1])
-          for(k[2] = lo[2]; k[2] <= hi[2]; ++k[2])
-            marked.push_back(k);
-    }
-    std::sort(marked.begin(), marked.end());
-    marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
-    std::vector<Box> near;
-    for(const Box& b : all)
-    {
-      // a box over many cells (a long triangle) is kept without looking them up
-      bool meets = cells(b, lo, hi) > 64;
-      for(k[0] = lo[0]; !meets && k[0] <= hi[0]; ++k[0])
-        for(k[1] = lo[1]; !meets && k[1] <= hi[1]; ++k[1])
-          for(k[2] = lo[2]; !meets && k[2] <= hi[2]; ++k[2])
-            meets = std::binary_search(marked.begin(), marked.end(), k);
-      if(meets)
-        near.push_back(b);
-    }
-    return near;
-  }
-
-  Box box(const Points& X, std::size_t f) const
-  {
-    double lo[3], hi[3];
-    for(int c = 0; c < 3; ++c)
-    {
-      lo[c] = hi[c] = X(m_triangles[f][0], c);
-      for(int k = 1; k < 3; ++k)
-      {
-        lo[c] = (std::min)(lo[c], X(m_triangles[f][std::size_t(k)], c));
-        hi[c] = (std::max)(hi[c], X(m_triangles[f][std::size_t(k)], c));
-      }
-    }
-    return Box(Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), f);
-  }
-
-  static bool cross(const Points& X, const std::array<Index, 3>& s, const std::array<Index, 3>& t)
-  {
-    const auto p = [&X](Index v) { return Kernel::Point_3(X(v, 0), X(v, 1), X(v, 2)); };
-    // A triangle collapsed to a segment has no side: it counts as crossing, to be pulled back.
-    if(collinear(p(s[0]), p(s[1]), p(s[2])) || collinear(p(t[0]), p(t[1]), p(t[2])))
-      return true;
-    int shared = 0, i = 0, j = 0;
-    for(int a = 0; a < 3; ++a)
-      for(int b = 0; b < 3; ++b)
-        if(s[std::size_t(a)] == t[std::size_t(b)])
-          ++shared, i = a, j = b;
-    if(shared >= 2)
-    {
-      // The third points of s and t, on the same side of the shared edge in one plane.
-      int a = 0, b = 0;
-      while(a < 3 && (s[std::size_t(a)] == t[0] || s[std::size_t(a)] == t[1] || s[std::size_t(a)] == t[2]))
-        ++a;
-      while(b < 3 && (t[std::size_t(b)] == s[0] || t[std::size_t(b)] == s[1] || t[std::size_t(b)] == s[2]))
-        ++b;
-      if(a == 3 || b == 3)
-        return true; // one triangle twice
-      const Kernel::Point_3 u = p(s[std::size_t((a + 1) % 3)]), v = p(s[std::size_t((a + 2) % 3)]);
-      return coplanar(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) &&
-             coplanar_orientation(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) == POSITIVE;
-    }
-    const Kernel::Triangle_3 S(p(s[0]), p(s[1]), p(s[2])), T(p(t[0]), p(t[1]), p(t[2]));
-    if(shared == 1)
-      return do_intersect(S, Kernel::Segment_3(p(t[std::size_t((j + 1) % 3)]), p(t[std::size_t((j + 2) % 3)]))) ||
-             do_intersect(T, Kernel::Segment_3(p(s[std::size_t((i + 1) % 3)]), p(s[std::size_t((i + 2) % 3)])));
-    return do_intersect(S, T);
-  }
-
-  const std::vector<std::array<Index, 3> >& m_triangles;
-};
 
 // Pulls the points of the triangles of X that cross, where they did not cross in X0, back
 // towards X0 until none is left; returns the number of points pulled.
