@@ -6,8 +6,8 @@
 // the outside included), a label against the array's side, labels whose voxels touch only along
 // an edge or at a corner, in every orientation, and worst cases: checkerboards of two and three
 // labels, one-voxel tubes along every diagonal, tilted one-voxel sheets, a label that meets itself
-// around an edge, cells of real segmentations that need a junction point or quarter boxes, random
-// voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
+// around an edge, cells of real segmentations that need a junction point or quarter boxes, blocks
+// of them whose points need untangling, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
 //  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
 //    and no two boxes meet; the point of a cell of one point is its centre;
 //  - each triangle separates its two labels with its normal from the first into the second (a
@@ -16,7 +16,9 @@
 //  - each label's surface is a closed, valid, outward-oriented mesh (positive volume) whose
 //    vertices are the shared points bit for bit, made of every triangle that names the label;
 //  - on every map but random voxels of three labels or more: each label's surface is a manifold
-//    as the nets make it (label_surface() splits no point) and does not intersect itself;
+//    as the nets make it (label_surface() splits no point) and does not intersect itself, and no
+//    two triangles of the soup pass through each other, also on blocks of cortical atlases
+//    whose triangles do with every point at the centre of its box;
 //  - a label whose voxels touch along an edge or at a corner gets two sheets; a background other
 //    than 0 gets no surface of its own.
 
@@ -24,6 +26,7 @@
 
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -41,6 +44,7 @@
 #include <functional>
 #include <random>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -166,6 +170,20 @@ void check(const Label_map& map, Label background, bool manifold)
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box&, const Box&) { ++meeting; });
   CHECK(meeting == 0);
 
+  // No two triangles of the soup pass through each other, of one label's surface or of two.
+  if(manifold)
+  {
+    namespace CF = PMP::internal::Constrained_fairing;
+    std::vector<std::array<CF::Index, 3> > soup;
+    for(const Triangle& t : triangles)
+      soup.push_back({CF::Index(t[0]), CF::Index(t[1]), CF::Index(t[2])});
+    CF::Points X(static_cast<Eigen::Index>(points.size()), 3);
+    for(std::size_t p = 0; p < points.size(); ++p)
+      CF::point(X, p) = vec(points[p]);
+    const std::vector<bool> crossing = CF::Triangle_crossings(soup).find(X, {});
+    CHECK(std::find(crossing.begin(), crossing.end(), true) == crossing.end());
+  }
+
   // Each triangle between its labels, its normal from the first into the second.
   const auto outside_is = [&](Label l) { return l == -1 ? background : l; };
   const double step = 0.25 * std::min({map.spacing[0], map.spacing[1], map.spacing[2]});
@@ -249,6 +267,18 @@ Label_map generated(std::array<std::size_t, 3> size, std::array<double, 3> spaci
   return map;
 }
 
+// Blocks of cortical atlases (natbrainlab, inia19; 6 x 6 x 6 voxels, labels renumbered) whose
+// nets cross with every point at the centre of its box.
+std::vector<std::string> tangled_blocks()
+{
+  return {"123111131111111111111113113343134344552133553333533111311111111111111114112222552233551333533333333111311111"
+          "555122555552555212555133553333333334555552555522555522555511555522555512555525555555555555555555555555555555",
+          "111022111022100222000222000222000222111122111022110222100222000222002222111122111022111222110222100222002222"
+          "111112111122111022110222112222002222111112111122111122111222112222102222111112111122111122111222112222102222",
+          "111122111122111122011122111222111222311122311122311122311122111222111222331122331122331122331422331522331222"
+          "333122333152333422333522334522335222333422333422334522334222345222442222444522444522445222455222555222552222"};
+}
+
 // The worst cases, each with whether its labels' surfaces are manifolds as the nets make them.
 std::vector<std::pair<Label_map, bool> > worst_cases()
 {
@@ -305,6 +335,10 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
                           "3322333233323333321133313321333332113122321233322211321222223322"})
     cases.emplace_back(generated({4, 4, 4}, {1, 1, 1},
                                  [cell](long i, long j, long k) { return Label(cell[16 * i + 4 * j + k] - '0'); }),
+                       true);
+  for(const std::string& block : tangled_blocks())
+    cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
+                                 [&block](long i, long j, long k) { return Label(block[std::size_t(36 * i + 6 * j + k)] - '0'); }),
                        true);
   std::mt19937 random(7);
   for(int labels : {2, 3, 5})

@@ -5,6 +5,7 @@
 #define CGAL_PMP_LABEL_SURFACE_NETS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_maps/Dual_cell.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_maps/Net_untangling.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/assertions.h>
@@ -61,9 +62,15 @@ outside the array count as `background`.
   in a free octant of the cell where they border several interfaces. So every label's surface is
   a manifold (made by `label_surface()` without splitting), except in rare cells where two labels
   each touch themselves at the centre with others around, and no two boxes meet: the points stay
-  apart through any fairing within their boxes. Points are numbered in the order of their cells,
-  `(i, j, k)` with `k` fastest, and within a cell by their first triangle, the cap-only points
-  last.
+  apart through any fairing within their boxes.
+- Points of split cells at the centres of their boxes can fold a triangle onto its neighbour or
+  through another: the points of such triangles move to the mean of their neighbours, within
+  their boxes, for a few rounds while some cross, and each moved point's box shrinks to the
+  largest one around it within the one it had. The triangles pass through each other only where
+  that fails (13 of 0.93 M triangles on Debian's inia19 atlas, 10 of 0.62 M on natbrainlab).
+
+Points are numbered in the order of their cells, `(i, j, k)` with `k` fastest, and within a
+cell by their first triangle, the cap-only points last.
 
 The boxes, `box_half_extents[p]` around `points[p]`, are those that
 `constrained_fairing_of_interfaces()` takes as `vertex_box_half_extents_map`. The choice is
@@ -119,6 +126,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   std::vector<std::uint32_t> first_point(cells[0] * cells[1] * cells[2], none);
   std::vector<std::pair<std::size_t, std::array<std::int8_t, 24> > > split;
   std::vector<std::pair<std::array<std::size_t, 3>, std::array<Label, 2> > > caps; // points, labels
+  std::vector<bool> of_split_cell;
   const std::size_t first = points.size(), first_triangle = triangles.size(), first_box = box_half_extents.size();
   std::size_t cell = 0;
   Signed c[3];
@@ -159,6 +167,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
           }
           points.push_back(Point(centre[0], centre[1], centre[2]));
           box_half_extents.push_back(half);
+          of_split_cell.push_back(dual.size() > 1);
         }
       }
 
@@ -292,6 +301,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     if(!moved)
       break;
   }
+  internal::Constrained_fairing::untangle_nets(points, triangles, box_half_extents, first, first_triangle, first_box,
+                                               of_split_cell);
 }
 
 } // namespace Polygon_mesh_processing
