@@ -81,7 +81,8 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     of neighbouring voxels with different labels. Then, with `fair`, all the interfaces are faired
     at once (``constrained_fairing_of_interfaces()``): each point stays in its box (its dual cell
     shrunk by `LABEL_BOX_MARGIN` of the spacing, or the part of it that its sheet occupies
-    where a label's voxels meet only along an edge or at a corner; exactly in double), the
+    where a label's voxels meet only along an edge or at a corner, smaller around a point moved
+    to part crossing triangles of the nets; exactly in double), the
     interfaces stay shared, the surfaces never touch themselves or each other, and the junction
     lines where three labels meet are faired as curves.
 
