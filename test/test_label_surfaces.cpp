@@ -9,7 +9,7 @@
 // around an edge, cells of real segmentations that need a junction point or quarter boxes, blocks
 // of them whose points need untangling, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
 //  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
-//    and no two boxes meet; the point of a cell of one point is its centre;
+//    and no two boxes meet; a point off its cell's centre has a box smaller than the cell's;
 //  - each triangle separates its two labels with its normal from the first into the second (a
 //    point just behind it lies in a voxel of the first label, just in front of it in one of the
 //    second);
@@ -20,7 +20,9 @@
 //    two triangles of the soup pass through each other, also on blocks of cortical atlases
 //    whose triangles do with every point at the centre of its box;
 //  - a label whose voxels touch along an edge or at a corner gets two sheets; a background other
-//    than 0 gets no surface of its own.
+//    than 0 gets no surface of its own;
+//  - the untangling alone, on a patch whose triangles fold: no crossing left, every point and its
+//    new box within the box it had.
 
 #include "test_support.h"
 
@@ -267,6 +269,59 @@ Label_map generated(std::array<std::size_t, 3> size, std::array<double, 3> spaci
   return map;
 }
 
+// The untangling (Net_untangling.h) on a flat 3 x 3 patch whose centre point lies beyond its
+// neighbours, in a box large enough to go back, so that its triangles fold over theirs; the patch
+// after a point and a triangle already there, and a point of no triangle after it. Checked: the
+// patch entered tangled, and leaves with no crossing, every point within the box it had, each
+// new box within the old one and not empty; the points outside the patch keep their places and
+// boxes.
+void check_untangling()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  std::vector<Point> points = {Point(9, 9, 9)};
+  std::vector<std::array<double, 3> > half = {{0.1, 0.1, 0.1}};
+  std::vector<Triangle> triangles = {{0, 0, 0}};
+  const auto at = [](std::size_t i, std::size_t j) { return 1 + 3 * i + j; };
+  for(std::size_t i = 0; i < 3; ++i)
+    for(std::size_t j = 0; j < 3; ++j)
+    {
+      const bool centre = i == 1 && j == 1;
+      points.push_back(centre ? Point(2.5, 1.2, 0) : Point(double(i), double(j), 0));
+      half.push_back(centre ? std::array<double, 3>{2, 2, 1} : std::array<double, 3>{0.1, 0.1, 0.1});
+    }
+  points.push_back(Point(-9, -9, -9));
+  half.push_back({0.1, 0.1, 0.1});
+  for(std::size_t i = 0; i < 2; ++i)
+    for(std::size_t j = 0; j < 2; ++j)
+    {
+      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  const auto crossings = [&]() {
+    std::vector<std::array<CF::Index, 3> > patch;
+    for(std::size_t f = 1; f < triangles.size(); ++f)
+      patch.push_back({CF::Index(triangles[f][0] - 1), CF::Index(triangles[f][1] - 1), CF::Index(triangles[f][2] - 1)});
+    CF::Points X(static_cast<Eigen::Index>(points.size() - 1), 3);
+    for(std::size_t p = 1; p < points.size(); ++p)
+      CF::point(X, p - 1) = vec(points[p]);
+    const std::vector<bool> crossing = CF::Triangle_crossings(patch).find(X, {});
+    return std::count(crossing.begin(), crossing.end(), true);
+  };
+  CHECK(crossings() > 0);
+  const std::vector<Point> before = points;
+  const std::vector<std::array<double, 3> > before_half = half;
+  CF::untangle_nets(points, triangles, half, 1, 1, 1, std::vector<bool>(points.size() - 1, true));
+  CHECK(crossings() == 0);
+  for(std::size_t p = 0; p < points.size(); ++p)
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const double moved = std::abs(points[p][int(c)] - before[p][int(c)]);
+      CHECK(moved <= before_half[p][c] && moved + half[p][c] <= before_half[p][c] + 1e-12 && half[p][c] > 0);
+    }
+  for(std::size_t p : {std::size_t(0), points.size() - 1})
+    CHECK(points[p] == before[p] && half[p] == before_half[p]);
+}
+
 // Blocks of cortical atlases (natbrainlab, inia19; 6 x 6 x 6 voxels, labels renumbered) whose
 // nets cross with every point at the centre of its box.
 std::vector<std::string> tangled_blocks()
@@ -364,5 +419,6 @@ int main()
   }
   for(const auto& worst : worst_cases())
     check(worst.first, 0, worst.second);
+  check_untangling();
   return test::report("test_label_surfaces");
 }

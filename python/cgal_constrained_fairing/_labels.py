@@ -37,7 +37,8 @@ class LabelSurfaces:
     box_half_extents : numpy.ndarray
         ``(n, 3)`` float64, the half-extents of each point's box (in the voxels' frame): its dual
         cell shrunk by `LABEL_BOX_MARGIN` of the spacing, or a part of it where the cell holds
-        several sheets of a surface (``CGAL::Polygon_mesh_processing::label_surface_nets()``).
+        several sheets of a surface, smaller around a point moved off its centre to part
+        crossing triangles (``CGAL::Polygon_mesh_processing::label_surface_nets()``).
     report : Report or None
         What the fairing did; ``None`` when it was not asked for.
     labels : numpy.ndarray
@@ -77,8 +78,9 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     """The surfaces of a 3-D label map, faired together within their voxels.
 
     Multi-label surface nets (``CGAL::Polygon_mesh_processing::label_surface_nets()``): a point
-    at the centre of each cube of 8 voxel centres whose labels differ, two triangles for each pair
-    of neighbouring voxels with different labels. Then, with `fair`, all the interfaces are faired
+    at the centre of each cube of 8 voxel centres whose labels differ (or of each part of it
+    that a sheet of the surface occupies, moved where triangles would cross), two triangles for
+    each pair of neighbouring voxels with different labels. Then, with `fair`, all the interfaces are faired
     at once (``constrained_fairing_of_interfaces()``): each point stays in its box (its dual cell
     shrunk by `LABEL_BOX_MARGIN` of the spacing, or the part of it that its sheet occupies
     where a label's voxels meet only along an edge or at a corner, smaller around a point moved

@@ -2,16 +2,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The untangling of a label map's surface nets. A promise, then how it is kept: every point
-// stays in the box it had, and the nets cross (Triangle_crossings.h) only where moving points
-// within those boxes did not part them. Points of split cells at the centres of their boxes
+// stays in the box it had (up to rounding), and the nets cross (Triangle_crossings.h) only where
+// moving points within those boxes did not part them. Points of split cells at the centres of their boxes
 // (Dual_cell.h) can fold a triangle onto its neighbour or through another, and a crossing of the
 // unfaired nets is one that neither the fairing nor the crossing repair, which pulls towards
 // the start, can undo; points that end or branch a junction line even stay where they start.
 // So the points of crossing triangles move to the mean of their neighbours, clamped to the boxes
-// they had, round after round (untangling_rounds) while some cross; each moved point's box then
-// shrinks to the largest one around it within the old. Only triangles with a point of a split
-// cell are searched: the others, at the centres of their cells, are faces of the dual grid,
-// which never cross.
+// they had less untangling_room, round after round (untangling_rounds) while some cross; each
+// moved point's box then shrinks to the largest one around it within the old. The first search
+// is among the triangles with a point of a split cell (a cell of several points) only: the
+// others, at the centres of their cells, are faces of the dual grid, which never cross; later
+// ones among those that crossed or have a moved point.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
@@ -32,8 +33,8 @@ namespace internal {
 namespace Constrained_fairing {
 
 // On the atlases of Debian's mricron-data, the crossing triangles of the nets went from 463 to 13
-// (inia19) and from 156 to 10 (natbrainlab); a trial of these moves reached in two rounds what
-// it reached in 64.
+// (inia19) and from 156 to 10 (natbrainlab); a trial of these moves without the room reached in
+// two rounds what it reached in 64.
 constexpr std::size_t untangling_rounds = 8;
 // What a moved point keeps of its box's half-extent at least, so that it can still move along
 // every axis (a quarter left 26 crossing triangles on natbrainlab, nothing left boxes of no
