@@ -65,10 +65,11 @@ outside the array count as `background`.
   apart through any fairing within their boxes.
 - Points of cells of several points, at the centres of their boxes, can fold a triangle onto its
   neighbour or through another: the points of such triangles, of any cell, move to the mean of
-  their neighbours, within seven eighths of their boxes, for a few rounds while some cross, and
+  their neighbours (with the points around them after the first round), within seven eighths
+  of their boxes, for a few rounds while some cross, and
   each moved point's box shrinks to the largest one around it within the one it had (up to
   rounding). The triangles pass through each other only where
-  that fails (13 of 0.93 M triangles on Debian's inia19 atlas, 10 of 0.62 M on natbrainlab).
+  that fails (13 of 0.93 M triangles on Debian's inia19 atlas, 3 of 0.62 M on natbrainlab).
 
 Points are numbered in the order of their cells, `(i, j, k)` with `k` fastest, and within a
 cell by their first triangle, the cap-only points last.

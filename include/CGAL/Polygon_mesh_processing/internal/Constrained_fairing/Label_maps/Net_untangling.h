@@ -7,12 +7,12 @@
 // (Dual_cell.h) can fold a triangle onto its neighbour or through another, and a crossing of the
 // unfaired nets is one that neither the fairing nor the crossing repair, which pulls towards
 // the start, can undo; points that end or branch a junction line even stay where they start.
-// So the points of crossing triangles move to the mean of their neighbours, clamped to the boxes
-// they had less untangling_room, round after round (untangling_rounds) while some cross; each
-// moved point's box then shrinks to the largest one around it within the old. The first search
-// is among the triangles with a point of a split cell (a cell of several points) only: the
-// others, at the centres of their cells, are faces of the dual grid, which never cross; later
-// ones among those that crossed or have a moved point.
+// So the points of crossing triangles (from the second round on, with their neighbours) move to
+// the mean of their neighbours, clamped to the boxes they had less untangling_room, round after
+// round (untangling_rounds) while some cross; each moved point's box then shrinks to the largest
+// one around it within the old. The first search is among the triangles with a point of a split
+// cell (a cell of several points) only: the others, at the centres of their cells, are faces of
+// the dual grid, which never cross; later ones among those that crossed or have a moved point.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
@@ -33,8 +33,8 @@ namespace internal {
 namespace Constrained_fairing {
 
 // On the atlases of Debian's mricron-data, the crossing triangles of the nets went from 463 to 13
-// (inia19) and from 156 to 10 (natbrainlab); a trial of these moves without the room reached in
-// two rounds what it reached in 64.
+// (inia19) and from 156 to 3 (natbrainlab); a trial of the first round's moves alone, without the
+// room, reached in two rounds what it reached in 64.
 constexpr std::size_t untangling_rounds = 8;
 // What a moved point keeps of its box's half-extent at least, so that it can still move along
 // every axis (a quarter left 26 crossing triangles on natbrainlab, nothing left boxes of no
@@ -86,6 +86,17 @@ void untangle_nets(PointRange& points, const TriangleRange& triangles, BoxRange&
           moved[v] = moved_ever[v] = any = true;
     if(!any)
       break;
+    // From the second round on, the points around them too: a fold that the first round left is
+    // held by neighbours that did not move.
+    if(round > 0)
+    {
+      std::vector<bool> around = moved;
+      for(const auto& t : local)
+        if(moved[t[0]] || moved[t[1]] || moved[t[2]])
+          for(Index v : t)
+            around[v] = moved_ever[v] = true;
+      moved.swap(around);
+    }
     // the mean of the neighbours, each counted once per triangle it shares
     for(const auto& t : local)
       for(std::size_t k = 0; k < 3; ++k)
