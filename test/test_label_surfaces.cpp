@@ -22,7 +22,8 @@
 //  - a label whose voxels touch along an edge or at a corner gets two sheets; a background other
 //    than 0 gets no surface of its own;
 //  - the untangling alone, on a patch whose triangles fold: no crossing left, every point and its
-//    new box within the box it had.
+//    new box within the box it had;
+//  - nets appended to a soup already there are the same, their indices shifted.
 
 #include "test_support.h"
 
@@ -406,6 +407,35 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
   return cases;
 }
 
+// label_surface_nets() appending to a soup already there (a tangled block of an atlas, so that
+// the untangling runs on the appended part): the second soup is the first, its indices shifted
+// by the number of points before it, bit for bit.
+void check_appending()
+{
+  const std::string block = tangled_blocks().front();
+  std::vector<Label> labels;
+  for(char c : block)
+    labels.push_back(Label(c - '0'));
+  const std::array<std::size_t, 3> size{6, 6, 6};
+  const std::array<double, 3> spacing{1, 1, 1}, origin{0.5, -2, 3};
+  std::vector<Point> points;
+  std::vector<Triangle> triangles;
+  std::vector<std::array<Label, 2> > face_labels;
+  std::vector<std::array<double, 3> > half;
+  PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, half);
+  const std::size_t n = points.size(), m = triangles.size();
+  PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, half);
+  CHECK(n > 0 && points.size() == 2 * n && half.size() == 2 * n && triangles.size() == 2 * m &&
+        face_labels.size() == 2 * m);
+  for(std::size_t p = 0; p < n && points.size() == 2 * n && half.size() == 2 * n; ++p)
+    CHECK(points[n + p] == points[p] && half[n + p] == half[p]);
+  for(std::size_t f = 0; f < m && triangles.size() == 2 * m && face_labels.size() == 2 * m; ++f)
+  {
+    const Triangle shifted = {triangles[f][0] + n, triangles[f][1] + n, triangles[f][2] + n};
+    CHECK(triangles[m + f] == shifted && face_labels[m + f] == face_labels[f]);
+  }
+}
+
 int main()
 {
   for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})
@@ -420,5 +450,6 @@ int main()
   for(const auto& worst : worst_cases())
     check(worst.first, 0, worst.second);
   check_untangling();
+  check_appending();
   return test::report("test_label_surfaces");
 }
