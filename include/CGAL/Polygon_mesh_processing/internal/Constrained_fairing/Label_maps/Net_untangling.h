@@ -3,20 +3,22 @@
 //
 // The untangling of a label map's surface nets. A promise, then how it is kept: every point
 // stays in the box it had (up to rounding), and the nets cross (Triangle_crossings.h) only where
-// moving points within those boxes did not part them. Points of split cells at the centres of their boxes
-// (Dual_cell.h) can fold a triangle onto its neighbour or through another, and a crossing of the
-// unfaired nets is one that neither the fairing nor the crossing repair, which pulls towards
-// the start, can undo; points that end or branch a junction line even stay where they start.
-// So the points of crossing triangles (from the second round on, with their neighbours) move to
-// the mean of their neighbours, clamped to the boxes they had less untangling_room, round after
-// round (untangling_rounds) while some cross; each moved point's box then shrinks to the largest
-// one around it within the old. The first search is among the triangles with a point of a split
-// cell (a cell of several points) only: the others, at the centres of their cells, are faces of
-// the dual grid, which never cross; later ones among those that crossed or have a moved point.
+// moving points within those boxes did not part them. Points of split cells at the centres of
+// their boxes (Dual_cell.h) can fold a triangle onto its neighbour or through another, and a
+// crossing of the unfaired nets is one that neither the fairing nor the crossing repair, which
+// pulls towards the start, can undo; points that end or branch a junction line even stay where
+// they start. So the points of crossing triangles (from the second round on, with their
+// neighbours) move to the mean of their neighbours (Neighbour_mean, Mesh_operators.h), clamped
+// to the boxes they had less untangling_room, round after round (untangling_rounds) while some
+// cross; each moved point's box then shrinks to the largest one around it within the old. The
+// first search is among the triangles with a point of a split cell (a cell of several points)
+// only: the others, at the centres of their cells, are faces of the dual grid, which never
+// cross; later ones among those that crossed or have a moved point.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
@@ -74,8 +76,6 @@ void untangle_nets(PointRange& points, const TriangleRange& triangles, BoxRange&
 
   const Triangle_crossings crossings(local);
   std::vector<bool> crossing = crossings.find(X, changed), moved_ever(n, false);
-  Points sum(static_cast<Eigen::Index>(n), 3);
-  std::vector<std::size_t> count(n, 0);
   for(std::size_t round = 0; round < untangling_rounds; ++round)
   {
     std::vector<bool> moved(n, false);
@@ -97,22 +97,11 @@ void untangle_nets(PointRange& points, const TriangleRange& triangles, BoxRange&
             around[v] = moved_ever[v] = true;
       moved.swap(around);
     }
-    // the mean of the neighbours, each counted once per triangle it shares
-    for(const auto& t : local)
-      for(std::size_t k = 0; k < 3; ++k)
-        if(moved[t[k]])
-        {
-          if(count[t[k]] == 0)
-            point(sum, t[k]).setZero();
-          point(sum, t[k]) += point(X, t[(k + 1) % 3]) + point(X, t[(k + 2) % 3]);
-          count[t[k]] += 2;
-        }
+    Neighbour_mean neighbours(local, n, [&moved](std::size_t v) { return bool(moved[v]); });
+    neighbours.gather(X);
     for(std::size_t v = 0; v < n; ++v)
       if(moved[v])
-      {
-        point(X, v) = (point(sum, v) / double(count[v])).cwiseMax(point(low, v)).cwiseMin(point(high, v));
-        count[v] = 0;
-      }
+        point(X, v) = neighbours.mean(v).cwiseMax(point(low, v)).cwiseMin(point(high, v));
     for(std::size_t f = 0; f < m; ++f)
       changed[f] = crossing[f] || moved[local[f][0]] || moved[local[f][1]] || moved[local[f][2]];
     crossing = crossings.find(X, changed);

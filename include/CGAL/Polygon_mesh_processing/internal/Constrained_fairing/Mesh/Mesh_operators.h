@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -42,9 +43,16 @@ public:
 
   // Only for the vertices i for which `selected(i)`; the others get no neighbours.
   template <typename Selected>
-  Neighbour_mean(const Hinge_mesh& mesh, const Selected& selected) : m_mesh(mesh), m_count(mesh.number_of_vertices, 0.)
+  Neighbour_mean(const Hinge_mesh& mesh, const Selected& selected)
+    : Neighbour_mean(mesh.triangles, mesh.number_of_vertices, selected)
+  {}
+
+  // The same over any triangles of n vertices (a soup).
+  template <typename Selected>
+  Neighbour_mean(const std::vector<std::array<Index, 3> >& triangles, std::size_t n, const Selected& selected)
+    : m_triangles(triangles), m_count(n, 0.)
   {
-    for(const auto& t : mesh.triangles)
+    for(const auto& t : triangles)
       for(Index v : t)
         if(selected(std::size_t(v)))
           m_count[v] += 2;
@@ -54,7 +62,7 @@ public:
   void gather(const Points& X)
   {
     m_sum.setZero(X.rows(), 3);
-    for(const auto& t : m_mesh.triangles)
+    for(const auto& t : m_triangles)
       for(std::size_t k = 0; k < 3; ++k)
         if(m_count[t[k]] > 0)
           point(m_sum, t[k]) += point(X, t[(k + 1) % 3]) + point(X, t[(k + 2) % 3]);
@@ -68,7 +76,7 @@ public:
   Eigen::Vector3d mean(std::size_t i) const { return sum(i) / m_count[i]; }
 
 private:
-  const Hinge_mesh& m_mesh;
+  const std::vector<std::array<Index, 3> >& m_triangles;
   std::vector<double> m_count;
   Points m_sum;
 };
