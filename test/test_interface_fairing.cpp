@@ -18,14 +18,17 @@
 //    on average (the bending energy alone kept it at or outside them);
 //  - the crossing search of the repair (Crossing_repair.h) against every pair tested with CGAL's
 //    do_intersect, over all pairs and over the pairs with a few changed triangles, on triangles
-//    of sizes over three orders of magnitude;
+//    of sizes over three orders of magnitude; the repair on a grid thrown at random in its boxes:
+//    no crossing left, every point in its box, no triangle made a sliver by the pulls;
 //  - bad soups and values are rejected with their defect, the points left bit-identical.
 
 #include "ball_phantom.h"
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
@@ -36,6 +39,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -339,6 +343,71 @@ void check_crossing_search()
   CHECK(found > 0);
 }
 
+// The crossing repair (Crossing_repair.h) on a flat grid whose points were thrown at random
+// within their boxes, nearly flat so that many triangles turn over onto their neighbours, as a
+// descent that folded it might leave them, some points held: no
+// crossing is left, every point stays in its box, and every triangle ends at least as good as
+// the sliver threshold, as it was thrown or as it started, which the pulls alone, without the
+// threshold, do not keep (a threshold of 20 degrees, under which random throws leave many
+// triangles, so that the pulls' slivers are many enough to be seen).
+void check_crossing_repair()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  const std::size_t n = 25;
+  CF::Points X0(Eigen::Index(n * n), 3);
+  std::vector<std::array<CF::Index, 3> > triangles;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      X0.row(Eigen::Index(i * n + j)) << double(i), double(j), 0.;
+      const CF::Index a = CF::Index(i * n + j), b = a + 1, c = CF::Index(a + n), d = c + 1;
+      if(i + 1 < n && j + 1 < n)
+        triangles.push_back({a, c, d}), triangles.push_back({a, d, b});
+    }
+  const double half = 0.45, threshold = CF::Sliver_barrier::threshold_of_angle(20);
+  const CF::Box_bound bound(X0, half);
+  const CF::Triangle_crossings crossings(triangles);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> offset(-half, half), lift(-0.05, 0.05);
+  std::size_t crossed = 0, worse_without = 0;
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    std::vector<bool> moving(n * n);
+    CF::Points thrown = X0;
+    for(std::size_t v = 0; v < n * n; ++v)
+    {
+      moving[v] = v % 7 != 3;
+      if(moving[v])
+        thrown.row(Eigen::Index(v)) += Eigen::RowVector3d(offset(random), offset(random), lift(random));
+    }
+    const std::vector<bool> at_throw = crossings.find(thrown, {});
+    crossed += std::size_t(std::count(at_throw.begin(), at_throw.end(), true));
+    for(const double q0 : {threshold, 0.})
+    {
+      CF::Points X = thrown;
+      CF::repair_crossings(triangles, bound, moving, q0, X0, X);
+      const std::vector<bool> crossing = crossings.find(X, {});
+      CHECK(std::count(crossing.begin(), crossing.end(), true) == 0);
+      for(Eigen::Index v = 0; v < X.rows(); ++v)
+        for(int c = 0; c < 3; ++c)
+          CHECK(std::abs(X(v, c) - X0(v, c)) <= half);
+      for(const auto& t : triangles)
+      {
+        const bool started = (X.row(t[0]) == X0.row(t[0])) && (X.row(t[1]) == X0.row(t[1])) && (X.row(t[2]) == X0.row(t[2]));
+        const bool kept = CF::triangle_quality(X, t) >= (std::min)(threshold, CF::triangle_quality(thrown, t)) || started;
+        if(q0 > 0)
+          CHECK(kept);
+        else
+          worse_without += !kept;
+      }
+    }
+  }
+  std::cout << "  crossing repair: " << crossed << " crossing triangles thrown, none left; " << worse_without
+            << " triangles made slivers by the pulls without the threshold, none with it" << std::endl;
+  CHECK(crossed > 0);
+  CHECK(worse_without > 0);
+}
+
 // A call that must fail with `defect`, leaving the points as they were.
 template <typename NamedParameters>
 void check_rejected(std::vector<Point> points, const std::vector<Triangle>& triangles,
@@ -386,6 +455,7 @@ int main()
   check_label_volumes();
   check_thin_tube();
   check_crossing_search();
+  check_crossing_repair();
   check_bad_input();
   return test::report("test_interface_fairing");
 }

@@ -20,7 +20,7 @@
 //  - hinges(part, moving, X0, settings) and number_of_feature_edges() (the creases it keeps),
 //    sliding_points(part) (those with no surface normal),
 //    sliver_threshold(settings), add_terms(objective, X0, settings);
-//  - repair(bound, moving, X0, X, objective, result) after the descent;
+//  - repair(bound, moving, X0, X, objective, settings, result) after the descent;
 //  - clear_outputs(maps) before the part's values are written, and write(key, x, y, z).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_DRIVER_H
@@ -135,7 +135,7 @@ Constrained_fairing_result run_fairing_driver(Input& input, double epsilon, cons
       .run(X0, energy, anchor, callback, X, result);
     if(!result)
       return;
-    input.repair(bound, moving, X0, X, energy, result);
+    input.repair(bound, moving, X0, X, energy, settings, result);
 
     // report and write back; only moved points are written, the others keep their coordinates
     // exactly, even in an exact kernel

@@ -151,9 +151,9 @@ public:
 
   template <typename Bound>
   void repair(const Bound& bound, const std::vector<bool>& moving, const Points& X0, Points& X,
-              Fairing_objective& objective, Constrained_fairing_result& result) const
+              Fairing_objective& objective, const Fairing_settings& settings, Constrained_fairing_result& result) const
   {
-    if(repair_crossings(m_oriented, bound, moving, X0, X) > 0)
+    if(repair_crossings(m_oriented, bound, moving, sliver_threshold(settings), X0, X) > 0)
     {
       result.final_energy = objective.value(X);
       result.final_bending_energy = objective.bending_energy(X);

@@ -164,7 +164,7 @@ public:
 
   template <typename Bound>
   void repair(const Bound&, const std::vector<bool>&, const Points&, Points&, Fairing_objective&,
-              Constrained_fairing_result&) const
+              const Fairing_settings&, Constrained_fairing_result&) const
   {}
 
   // The detected creases are marked in the user's map of feature edges, if it is writable. With a face range, the

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -169,6 +170,14 @@ inline Eigen::Vector3d area_normal(const Points& X, const std::array<Index, 3>& 
 inline Eigen::Vector3d area_normal(const Hinge_mesh& mesh, const Points& X, std::size_t f)
 {
   return area_normal(X, mesh.triangles[f]);
+}
+
+// A triangle's quality, 4 sqrt(3) A / (l1^2 + l2^2 + l3^2): 1 when equilateral, 0 when degenerate.
+inline double triangle_quality(const Points& X, const std::array<Index, 3>& t)
+{
+  const double S = (point(X, t[1]) - point(X, t[0])).squaredNorm() + (point(X, t[2]) - point(X, t[1])).squaredNorm() +
+                   (point(X, t[0]) - point(X, t[2])).squaredNorm();
+  return 2 * std::sqrt(3.) * area_normal(X, t).norm() / S;
 }
 
 inline Eigen::Vector3d centroid(const Hinge_mesh& mesh, const Points& X, std::size_t f)

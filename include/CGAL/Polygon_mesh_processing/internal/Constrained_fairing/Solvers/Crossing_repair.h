@@ -2,22 +2,29 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Crossings: two triangles of a soup that pass through each other. A promise, then how it is
-// kept: the faired soup has no crossing that its input did not have. The bounds keep the points
-// of a label map apart (label_surface_nets()), but not the triangles between them: where two
-// sheets of a surface are pressed within their boxes (a ribbon one voxel thick, sheets that meet
-// at a junction), a faired triangle may pass through another. The repair finds the crossing
-// triangles (Triangle_crossings.h) and pulls their points halfway back towards where they
-// started, round after round, a point that was pulled crossing_repair_rounds times all the way:
-// the points end between where the descent left them and where they started, within their
-// bounds, which are convex, and every crossing goes but those of triangles that crossed at the
-// start already.
+// kept: the faired soup has no crossing that its input did not have, and the pulls that undo
+// them make no new sliver. The bounds keep the points of a label map apart
+// (label_surface_nets()), but not the triangles between them: where two sheets of a surface are
+// pressed within their boxes (a ribbon one voxel thick, sheets that meet at a junction), a faired
+// triangle may pass through another. The repair finds the crossing triangles
+// (Triangle_crossings.h) and pulls their points halfway back towards where they started, round
+// after round, a point that was pulled crossing_repair_rounds times all the way: the points end
+// between where the descent left them and where they started, within their bounds, which are
+// convex, and every crossing goes but those of triangles that crossed at the start already. A
+// point pulled while its neighbours stay can flatten a triangle around it into a needle (on the
+// atlases of label_map_topology, every angle under 4 degrees came from such pulls): a triangle
+// that the pulls leave under the barrier's threshold and worse than the descent left it has all
+// its points pulled in the next round, so that it moves back towards its start as a whole. Every
+// triangle ends at least as good as the threshold, as the descent left it or as it started.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -31,16 +38,20 @@ namespace Constrained_fairing {
 constexpr std::size_t crossing_repair_rounds = 6;
 
 // Pulls the points of the triangles of X that cross, where they did not cross in X0, back
-// towards X0 until none is left; returns the number of points pulled.
+// towards X0 until none is left, and those of the triangles that the pulls leave of quality
+// (triangle_quality()) under `sliver_threshold` and under their quality in X; returns the number
+// of points pulled.
 template <typename Bound>
 std::size_t repair_crossings(const std::vector<std::array<Index, 3> >& triangles, const Bound& bound,
-                             const std::vector<bool>& moving, const Points& X0, Points& X)
+                             const std::vector<bool>& moving, double sliver_threshold, const Points& X0, Points& X)
 {
   const Triangle_crossings crossings(triangles);
   const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
   std::vector<std::size_t> pulls(n, 0);
   std::size_t pulled = 0;
-  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false);
+  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), sliver(m, false);
+  std::vector<double> descended(m, -1.); // each triangle's quality in X, once a pull reaches it
+  const auto pullable = [&](Index v) { return moving[v] && pulls[v] <= crossing_repair_rounds; };
   for(;;)
   {
     // Which of the crossing triangles crossed at the start already: pulling them back cannot help.
@@ -58,23 +69,33 @@ std::size_t repair_crossings(const std::vector<std::array<Index, 3> >& triangles
     std::vector<bool> moved(n, false);
     any = false;
     for(std::size_t f = 0; f < m; ++f)
-      if(crossing[f] && !inherited[f])
+      if((crossing[f] && !inherited[f]) || sliver[f])
         for(Index v : triangles[f])
-          if(moving[v] && !moved[v] && pulls[v] <= crossing_repair_rounds)
-          {
+          if(pullable(v) && !moved[v])
             moved[v] = any = true;
-            pulled += pulls[v] == 0;
-            ++pulls[v];
-            const double keep = pulls[v] > crossing_repair_rounds ? 0 : 0.5;
-            point(X, v) = point(X0, v) + keep * (point(X, v) - point(X0, v));
-            bound.project(X, v);
-          }
     if(!any)
       return pulled;
-    // A triangle crosses now only if it crossed before or one of its points moved.
     std::vector<bool> changed(m, false);
     for(std::size_t f = 0; f < m; ++f)
-      changed[f] = crossing[f] || moved[triangles[f][0]] || moved[triangles[f][1]] || moved[triangles[f][2]];
+    {
+      changed[f] = moved[triangles[f][0]] || moved[triangles[f][1]] || moved[triangles[f][2]];
+      if(changed[f] && descended[f] < 0)
+        descended[f] = triangle_quality(X, triangles[f]);
+    }
+    for(std::size_t v = 0; v < n; ++v)
+      if(moved[v])
+      {
+        pulled += pulls[v] == 0;
+        ++pulls[v];
+        const double keep = pulls[v] > crossing_repair_rounds ? 0 : 0.5;
+        point(X, v) = point(X0, v) + keep * (point(X, v) - point(X0, v));
+        bound.project(X, v);
+      }
+    for(std::size_t f = 0; f < m; ++f)
+      sliver[f] = changed[f] && triangle_quality(X, triangles[f]) < (std::min)(sliver_threshold, descended[f]);
+    // A triangle crosses now only if it crossed before or one of its points moved.
+    for(std::size_t f = 0; f < m; ++f)
+      changed[f] = changed[f] || crossing[f];
     crossing = crossings.find(X, changed);
   }
 }
