@@ -19,7 +19,8 @@
 //  - the crossing search of the repair (Crossing_repair.h) against every pair tested with CGAL's
 //    do_intersect, over all pairs and over the pairs with a few changed triangles, on triangles
 //    of sizes over three orders of magnitude; the repair on a grid thrown at random in its boxes:
-//    no crossing left, every point in its box, no triangle made a sliver by the pulls;
+//    no crossing left, every point in its box, no smallest angle under both the repair's angle
+//    and its start's;
 //  - bad soups and values are rejected with their defect, the points left bit-identical.
 
 #include "ball_phantom.h"
@@ -28,7 +29,6 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
@@ -345,11 +345,9 @@ void check_crossing_search()
 
 // The crossing repair (Crossing_repair.h) on a flat grid whose points were thrown at random
 // within their boxes, nearly flat so that many triangles turn over onto their neighbours, as a
-// descent that folded it might leave them, some points held: no
-// crossing is left, every point stays in its box, and every triangle ends at least as good as
-// the sliver threshold, as it was thrown or as it started, which the pulls alone, without the
-// threshold, do not keep (a threshold of 20 degrees, under which random throws leave many
-// triangles, so that the pulls' slivers are many enough to be seen).
+// descent that folded it might leave them, some points held: no crossing is left, every point
+// stays in its box, and every triangle ends with its smallest angle at least the repair's angle or
+// its start's, which the pulls of crossings alone do not keep.
 void check_crossing_repair()
 {
   namespace CF = PMP::internal::Constrained_fairing;
@@ -364,7 +362,7 @@ void check_crossing_repair()
       if(i + 1 < n && j + 1 < n)
         triangles.push_back({a, c, d}), triangles.push_back({a, d, b});
     }
-  const double half = 0.45, threshold = CF::Sliver_barrier::threshold_of_angle(20);
+  const double half = 0.45, smallest_sine = std::sin(CF::interface_repair_angle * CGAL_PI / 180);
   const CF::Box_bound bound(X0, half);
   const CF::Triangle_crossings crossings(triangles);
   std::mt19937 random(3);
@@ -382,10 +380,10 @@ void check_crossing_repair()
     }
     const std::vector<bool> at_throw = crossings.find(thrown, {});
     crossed += std::size_t(std::count(at_throw.begin(), at_throw.end(), true));
-    for(const double q0 : {threshold, 0.})
+    for(const double sine : {smallest_sine, 0.})
     {
       CF::Points X = thrown;
-      CF::repair_crossings(triangles, bound, moving, q0, X0, X);
+      CF::repair_crossings_and_slivers(triangles, bound, moving, sine, X0, X);
       const std::vector<bool> crossing = crossings.find(X, {});
       CHECK(std::count(crossing.begin(), crossing.end(), true) == 0);
       for(Eigen::Index v = 0; v < X.rows(); ++v)
@@ -393,9 +391,8 @@ void check_crossing_repair()
           CHECK(std::abs(X(v, c) - X0(v, c)) <= half);
       for(const auto& t : triangles)
       {
-        const bool started = (X.row(t[0]) == X0.row(t[0])) && (X.row(t[1]) == X0.row(t[1])) && (X.row(t[2]) == X0.row(t[2]));
-        const bool kept = CF::triangle_quality(X, t) >= (std::min)(threshold, CF::triangle_quality(thrown, t)) || started;
-        if(q0 > 0)
+        const bool kept = CF::smallest_angle_sine(X, t) >= (std::min)(smallest_sine, CF::smallest_angle_sine(X0, t));
+        if(sine > 0)
           CHECK(kept);
         else
           worse_without += !kept;
@@ -403,7 +400,7 @@ void check_crossing_repair()
     }
   }
   std::cout << "  crossing repair: " << crossed << " crossing triangles thrown, none left; " << worse_without
-            << " triangles made slivers by the pulls without the threshold, none with it" << std::endl;
+            << " needles left by the pulls of crossings alone, none with the angle" << std::endl;
   CHECK(crossed > 0);
   CHECK(worse_without > 0);
 }

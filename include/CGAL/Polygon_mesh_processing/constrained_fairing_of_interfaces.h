@@ -39,6 +39,13 @@ alone would let grow on thin regions. A point
 that ends a junction line or where lines branch, and a point where four labels or more meet, does
 not move.
 
+After the descent, the points of two triangles that pass through each other, where they did not in
+the input, and those of a triangle whose smallest angle is under both 5 degrees and its own in the
+input, are pulled back towards their input positions, halfway per round, a point pulled six times
+all the way: the faired soup has no crossing that its input did not have, and no triangle's
+smallest angle is under both 5 degrees and its input's (with `sliver_barrier_weight(0)`, the
+crossings alone).
+
 The bound and the contract are those of `constrained_fairing()`, with the points numbered in
 `points`: the per-point maps are property maps whose key is a point's index (`std::size_t`);
 `box_half_extents` (half the voxel spacing for surface nets) gives every point the box around

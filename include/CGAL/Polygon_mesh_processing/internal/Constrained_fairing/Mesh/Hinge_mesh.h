@@ -172,12 +172,16 @@ inline Eigen::Vector3d area_normal(const Hinge_mesh& mesh, const Points& X, std:
   return area_normal(X, mesh.triangles[f]);
 }
 
-// A triangle's quality, 4 sqrt(3) A / (l1^2 + l2^2 + l3^2): 1 when equilateral, 0 when degenerate.
-inline double triangle_quality(const Points& X, const std::array<Index, 3>& t)
+// The sine of a triangle's smallest angle, which lies opposite its shortest side: twice its
+// area over the product of its two longer sides (0 for a triangle of no area).
+inline double smallest_angle_sine(const Points& X, const std::array<Index, 3>& t)
 {
-  const double S = (point(X, t[1]) - point(X, t[0])).squaredNorm() + (point(X, t[2]) - point(X, t[1])).squaredNorm() +
-                   (point(X, t[0]) - point(X, t[2])).squaredNorm();
-  return 2 * std::sqrt(3.) * area_normal(X, t).norm() / S;
+  std::array<double, 3> sides = {(point(X, t[1]) - point(X, t[0])).squaredNorm(),
+                                 (point(X, t[2]) - point(X, t[1])).squaredNorm(),
+                                 (point(X, t[0]) - point(X, t[2])).squaredNorm()};
+  std::sort(sides.begin(), sides.end());
+  const double longer = std::sqrt(sides[1]) * std::sqrt(sides[2]);
+  return longer > 0 ? area_normal(X, t).norm() / longer : 0.;
 }
 
 inline Eigen::Vector3d centroid(const Hinge_mesh& mesh, const Points& X, std::size_t f)

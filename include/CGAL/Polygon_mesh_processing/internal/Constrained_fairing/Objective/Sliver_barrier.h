@@ -109,7 +109,10 @@ private:
            (point(X, t[0]) - point(X, t[2])).squaredNorm();
   }
 
-  double quality(const Points& X, std::size_t f) const { return triangle_quality(X, m_mesh.triangles[f]); }
+  double quality(const Points& X, std::size_t f) const
+  {
+    return 2 * std::sqrt(3.) * area_normal(m_mesh, X, f).norm() / squared_edges(X, f);
+  }
 
   // With B_f = w (r - 1)^2 and r = q0 / (q + q0 / 100): dB_f = outer * dr, dr = inner * dq,
   // q = 4 sqrt(3) A / S, dA at vertex k = n x (p_(k+2) - p_(k+1)) / 2, dS = 2 (2 p_k - the others).

@@ -2,20 +2,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Crossings: two triangles of a soup that pass through each other. A promise, then how it is
-// kept: the faired soup has no crossing that its input did not have, and the pulls that undo
-// them make no new sliver. The bounds keep the points of a label map apart
-// (label_surface_nets()), but not the triangles between them: where two sheets of a surface are
-// pressed within their boxes (a ribbon one voxel thick, sheets that meet at a junction), a faired
-// triangle may pass through another. The repair finds the crossing triangles
-// (Triangle_crossings.h) and pulls their points halfway back towards where they started, round
-// after round, a point that was pulled crossing_repair_rounds times all the way: the points end
-// between where the descent left them and where they started, within their bounds, which are
-// convex, and every crossing goes but those of triangles that crossed at the start already. A
-// point pulled while its neighbours stay can flatten a triangle around it into a needle (on the
-// atlases of label_map_topology, every angle under 4 degrees came from such pulls): a triangle
-// that the pulls leave under the barrier's threshold and worse than the descent left it has all
-// its points pulled in the next round, so that it moves back towards its start as a whole. Every
-// triangle ends at least as good as the threshold, as the descent left it or as it started.
+// kept: the faired soup has no crossing that its input did not have, and no triangle whose
+// smallest angle is under both interface_repair_angle (Fairing_settings.h) and its start's. The
+// bounds keep the points of a label map apart (label_surface_nets()), but not the triangles
+// between them: where two sheets of a surface are pressed within their boxes (a ribbon one voxel
+// thick, sheets that meet at a junction), a faired triangle may pass through another. The repair
+// finds the crossing triangles (Triangle_crossings.h) and pulls their points halfway back towards
+// where they started, round after round, a point that was pulled crossing_repair_rounds times all
+// the way: the points end between where the descent left them and where they started, within
+// their bounds, which are convex, and every crossing goes but those of triangles that crossed at
+// the start already. Needles are pulled back too: a point pulled while its neighbours stay can
+// flatten a triangle around it into one (on the atlases of label_map_topology, every angle under
+// 4 degrees came from such pulls), and where the bounds and the junction lines hold a needle
+// against the barrier, the barrier leaves it between 4 and 6 degrees. Such a triangle has all its
+// points pulled, so that it goes back towards its start as a whole, until its smallest angle is
+// no longer under both, or it is its start.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
@@ -37,20 +38,25 @@ namespace Constrained_fairing {
 // The halfway pulls of a point before it is pulled back all the way.
 constexpr std::size_t crossing_repair_rounds = 6;
 
-// Pulls the points of the triangles of X that cross, where they did not cross in X0, back
-// towards X0 until none is left, and those of the triangles that the pulls leave of quality
-// (triangle_quality()) under `sliver_threshold` and under their quality in X; returns the number
-// of points pulled.
+// Pulls the points of the triangles of X that cross, where they did not cross in X0, and of those
+// whose smallest angle's sine (smallest_angle_sine()) is under both `smallest_sine` and its sine
+// in X0, back towards X0 until none is left; returns the number of points pulled.
 template <typename Bound>
-std::size_t repair_crossings(const std::vector<std::array<Index, 3> >& triangles, const Bound& bound,
-                             const std::vector<bool>& moving, double sliver_threshold, const Points& X0, Points& X)
+std::size_t repair_crossings_and_slivers(const std::vector<std::array<Index, 3> >& triangles, const Bound& bound,
+                                         const std::vector<bool>& moving, double smallest_sine, const Points& X0,
+                                         Points& X)
 {
   const Triangle_crossings crossings(triangles);
   const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
   std::vector<std::size_t> pulls(n, 0);
   std::size_t pulled = 0;
-  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), sliver(m, false);
-  std::vector<double> descended(m, -1.); // each triangle's quality in X, once a pull reaches it
+  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), sliver(m);
+  const auto worse = [&](std::size_t f) {
+    const double sine = smallest_angle_sine(X, triangles[f]);
+    return sine < smallest_sine && sine < smallest_angle_sine(X0, triangles[f]);
+  };
+  for(std::size_t f = 0; f < m; ++f)
+    sliver[f] = worse(f);
   const auto pullable = [&](Index v) { return moving[v] && pulls[v] <= crossing_repair_rounds; };
   for(;;)
   {
@@ -77,11 +83,7 @@ std::size_t repair_crossings(const std::vector<std::array<Index, 3> >& triangles
       return pulled;
     std::vector<bool> changed(m, false);
     for(std::size_t f = 0; f < m; ++f)
-    {
       changed[f] = moved[triangles[f][0]] || moved[triangles[f][1]] || moved[triangles[f][2]];
-      if(changed[f] && descended[f] < 0)
-        descended[f] = triangle_quality(X, triangles[f]);
-    }
     for(std::size_t v = 0; v < n; ++v)
       if(moved[v])
       {
@@ -92,7 +94,7 @@ std::size_t repair_crossings(const std::vector<std::array<Index, 3> >& triangles
         bound.project(X, v);
       }
     for(std::size_t f = 0; f < m; ++f)
-      sliver[f] = changed[f] && triangle_quality(X, triangles[f]) < (std::min)(sliver_threshold, descended[f]);
+      sliver[f] = changed[f] && worse(f);
     // A triangle crosses now only if it crossed before or one of its points moved.
     for(std::size_t f = 0; f < m; ++f)
       changed[f] = changed[f] || crossing[f];
