@@ -41,8 +41,8 @@ not move.
 
 After the descent, the points of two triangles that pass through each other, where they did not in
 the input, and those of a triangle whose smallest angle is under both 5 degrees and its own in the
-input, are pulled back towards their input positions, halfway per round, a point pulled six times
-all the way: the faired soup has no crossing that its input did not have, and no triangle's
+input, are pulled back towards their input positions, halfway per round and all the way after six
+rounds: the faired soup has no crossing that its input did not have, and no triangle's
 smallest angle is under both 5 degrees and its input's (with `sliver_barrier_weight(0)`, the
 crossings alone).
 

@@ -25,7 +25,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
