@@ -1,6 +1,6 @@
 // The defaults as the documentation states them, against the settings (Fairing_settings.h): the
-// reference manual's named parameters (constrained_fairing.h), the user manual, the README and
-// the tool's usage. A default changed in the code fails here until every text that states it is
+// reference manual's named parameters (constrained_fairing.h) and its repair of label surfaces
+// (constrained_fairing_of_interfaces.h), the user manual, the README and the tool's usage. A default changed in the code fails here until every text that states it is
 // changed too; this runs in every build, with or without the Python module (whose docstrings
 // python/tests/test_defaults.py checks against the same settings).
 
@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Named_settings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
 
 #include <cmath>
 #include <cstdio>
@@ -144,6 +145,17 @@ int main()
   CHECK(states(manual, "waits until what is left to gain is at most " + remaining + " of the energy"));
   CHECK(states(manual,
                "pushes back needles under " + number(q.interface_sliver_angle) + " degrees, not 3 as on meshes"));
+
+  // The repair after the descent on label surfaces (Crossing_repair.h), in the reference manual of
+  // constrained_fairing_of_interfaces() and in the user manual.
+  const std::string interfaces = text_of("include/CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h");
+  const std::string repair_angle = number(CF::interface_repair_angle);
+  CHECK(CF::crossing_repair_rounds == 6);
+  CHECK(states(interfaces, "halfway at each of a point's first six pulls and all the way at its seventh"));
+  CHECK(states(interfaces, "smallest angle is under both " + repair_angle + " degrees and its own in the input"));
+  CHECK(states(interfaces, "no triangle's smallest angle is under both " + repair_angle + " degrees and its input's"));
+  CHECK(states(manual, "smallest angle is under both " + repair_angle + " degrees and its own at the start"));
+  CHECK(states(manual, "the repair after the descent takes over at " + repair_angle + " degrees"));
 
   // The README and the tool's usage.
   const std::string readme = text_of("README.md");

@@ -18,9 +18,10 @@
 //    on average (the bending energy alone kept it at or outside them);
 //  - the crossing search of the repair (Crossing_repair.h) against every pair tested with CGAL's
 //    do_intersect, over all pairs and over the pairs with a few changed triangles, on triangles
-//    of sizes over three orders of magnitude; the repair on a grid thrown at random in its boxes:
-//    no crossing left, every point in its box, no smallest angle under both the repair's angle
-//    and its start's;
+//    of sizes over three orders of magnitude; the sine of a triangle's smallest angle on known
+//    triangles; the repair on a grid thrown at random in its boxes: no crossing left, every point
+//    in its box at its start or pulled halfway back some times, no smallest angle under both the
+//    repair's angle and its start's, a soup with nothing to repair untouched;
 //  - bad soups and values are rejected with their defect, the points left bit-identical.
 
 #include "ball_phantom.h"
@@ -343,52 +344,80 @@ void check_crossing_search()
   CHECK(found > 0);
 }
 
-// The crossing repair (Crossing_repair.h) on a flat grid whose points were thrown at random
+// The sine of a triangle's smallest angle (Hinge_mesh.h) on triangles whose angles are known.
+void check_smallest_angle_sine()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  CF::Points X(4, 3);
+  X << 0, 0, 0, 4, 0, 0, 0, 3, 0, 2, 2 * std::sqrt(3.), 0;
+  CHECK(std::abs(CF::smallest_angle_sine(X, {0, 1, 2}) - 0.6) < 1e-15);
+  CHECK(std::abs(CF::smallest_angle_sine(X, {2, 0, 1}) - 0.6) < 1e-15);
+  X.row(2) << 4, 0, 0; // coincident points
+  CHECK(CF::smallest_angle_sine(X, {0, 1, 2}) == 0);
+  X.row(2) << 8, 0, 0; // collinear
+  CHECK(CF::smallest_angle_sine(X, {0, 1, 2}) == 0);
+  CHECK(std::abs(CF::smallest_angle_sine(X, {0, 1, 3}) - std::sqrt(3.) / 2) < 1e-15);
+  for(const double scale : {1e-200, 1e200}) // no square underflows or overflows
+    CHECK(std::abs(CF::smallest_angle_sine(scale * X, {0, 1, 3}) - std::sqrt(3.) / 2) < 1e-15);
+}
+
+// The repair after the descent (Crossing_repair.h) on a grid whose points were thrown at random
 // within their boxes, nearly flat so that many triangles turn over onto their neighbours, as a
-// descent that folded it might leave them, some points held: no crossing is left, every point
-// stays in its box, and every triangle ends with its smallest angle at least the repair's angle or
-// its start's, which the pulls of crossings alone do not keep.
+// descent that folded it might leave them, some points held; on a flat grid and on one with a
+// squashed column of needles at the start. No crossing is left; every point stays in its box, at
+// its start or pulled halfway back some times; and every triangle ends with its smallest angle
+// at least the repair's angle or its start's, which the pulls of crossings alone do not keep. A
+// soup with nothing to repair is left bit for bit.
 void check_crossing_repair()
 {
   namespace CF = PMP::internal::Constrained_fairing;
   const std::size_t n = 25;
-  CF::Points X0(Eigen::Index(n * n), 3);
-  std::vector<std::array<CF::Index, 3> > triangles;
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = 0; j < n; ++j)
-    {
-      X0.row(Eigen::Index(i * n + j)) << double(i), double(j), 0.;
-      const CF::Index a = CF::Index(i * n + j), b = a + 1, c = CF::Index(a + n), d = c + 1;
-      if(i + 1 < n && j + 1 < n)
-        triangles.push_back({a, c, d}), triangles.push_back({a, d, b});
-    }
   const double half = 0.45, smallest_sine = std::sin(CF::interface_repair_angle * CGAL_PI / 180);
-  const CF::Box_bound bound(X0, half);
+  std::vector<std::array<CF::Index, 3> > triangles;
+  for(std::size_t i = 0; i + 1 < n; ++i)
+    for(std::size_t j = 0; j + 1 < n; ++j)
+    {
+      const CF::Index a = CF::Index(i * n + j), b = a + 1, c = CF::Index(a + n), d = c + 1;
+      triangles.push_back({a, c, d}), triangles.push_back({a, d, b});
+    }
   const CF::Triangle_crossings crossings(triangles);
+  std::vector<bool> moving(n * n);
+  for(std::size_t v = 0; v < n * n; ++v)
+    moving[v] = v % 7 != 3;
   std::mt19937 random(3);
   std::uniform_real_distribution<double> offset(-half, half), lift(-0.05, 0.05);
-  std::size_t crossed = 0, worse_without = 0;
+  std::size_t crossed = 0, needles_at_start = 0, worse_without = 0;
   for(int trial = 0; trial < 20; ++trial)
   {
-    std::vector<bool> moving(n * n);
+    // Odd trials start with column 12 squashed against column 11: needles at the start.
+    CF::Points X0(Eigen::Index(n * n), 3);
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j)
+        X0.row(Eigen::Index(i * n + j)) << (trial % 2 == 1 && i == 12 ? 11.05 : double(i)), double(j), 0.;
+    for(const auto& t : triangles)
+      needles_at_start += CF::smallest_angle_sine(X0, t) < smallest_sine;
+    const CF::Box_bound bound(X0, half);
     CF::Points thrown = X0;
     for(std::size_t v = 0; v < n * n; ++v)
-    {
-      moving[v] = v % 7 != 3;
       if(moving[v])
         thrown.row(Eigen::Index(v)) += Eigen::RowVector3d(offset(random), offset(random), lift(random));
-    }
     const std::vector<bool> at_throw = crossings.find(thrown, {});
     crossed += std::size_t(std::count(at_throw.begin(), at_throw.end(), true));
     for(const double sine : {smallest_sine, 0.})
     {
       CF::Points X = thrown;
-      CF::repair_crossings_and_slivers(triangles, bound, moving, sine, X0, X);
+      CF::repair_crossings_and_needles(triangles, bound, moving, sine, X0, X);
       const std::vector<bool> crossing = crossings.find(X, {});
       CHECK(std::count(crossing.begin(), crossing.end(), true) == 0);
       for(Eigen::Index v = 0; v < X.rows(); ++v)
+      {
+        bool pulled = X.row(v) == X0.row(v);
+        for(int k = 0; k <= int(CF::crossing_repair_rounds); ++k)
+          pulled = pulled || (X.row(v) - X0.row(v) - std::ldexp(1., -k) * (thrown.row(v) - X0.row(v))).norm() < 1e-12;
+        CHECK(pulled);
         for(int c = 0; c < 3; ++c)
           CHECK(std::abs(X(v, c) - X0(v, c)) <= half);
+      }
       for(const auto& t : triangles)
       {
         const bool kept = CF::smallest_angle_sine(X, t) >= (std::min)(smallest_sine, CF::smallest_angle_sine(X0, t));
@@ -398,10 +427,22 @@ void check_crossing_repair()
           worse_without += !kept;
       }
     }
+    if(trial % 2 == 1)
+      continue;
+    // The flat grid lifted as a whole but for its held points: nothing crosses, no needle.
+    CF::Points X = X0;
+    for(std::size_t v = 0; v < n * n; ++v)
+      if(moving[v])
+        X(Eigen::Index(v), 2) += 0.3;
+    const CF::Points lifted = X;
+    CHECK(CF::repair_crossings_and_needles(triangles, bound, moving, smallest_sine, X0, X) == 0);
+    CHECK((X.array() == lifted.array()).all());
   }
-  std::cout << "  crossing repair: " << crossed << " crossing triangles thrown, none left; " << worse_without
+  std::cout << "  crossing repair: " << crossed << " crossing triangles thrown, none left; " << needles_at_start
+            << " needles at the start kept; " << worse_without
             << " needles left by the pulls of crossings alone, none with the angle" << std::endl;
   CHECK(crossed > 0);
+  CHECK(needles_at_start > 0);
   CHECK(worse_without > 0);
 }
 
@@ -452,6 +493,7 @@ int main()
   check_label_volumes();
   check_thin_tube();
   check_crossing_search();
+  check_smallest_angle_sine();
   check_crossing_repair();
   check_bad_input();
   return test::report("test_interface_fairing");

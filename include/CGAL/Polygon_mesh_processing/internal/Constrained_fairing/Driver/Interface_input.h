@@ -155,10 +155,10 @@ public:
   void repair(const Bound& bound, const std::vector<bool>& moving, const Points& X0, Points& X,
               Fairing_objective& objective, const Fairing_settings& settings, Constrained_fairing_result& result) const
   {
-    // Without the barrier, slivers are the user's choice.
+    // Without the barrier, needles are the user's choice.
     const double smallest_sine =
       settings.sliver_barrier_weight > 0 ? std::sin(interface_repair_angle * CGAL_PI / 180) : 0;
-    if(repair_crossings_and_slivers(m_oriented, bound, moving, smallest_sine, X0, X) > 0)
+    if(repair_crossings_and_needles(m_oriented, bound, moving, smallest_sine, X0, X) > 0)
     {
       result.final_energy = objective.value(X);
       result.final_bending_energy = objective.bending_energy(X);

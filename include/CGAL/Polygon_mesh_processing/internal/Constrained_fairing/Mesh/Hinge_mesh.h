@@ -174,16 +174,23 @@ inline Eigen::Vector3d area_normal(const Hinge_mesh& mesh, const Points& X, std:
   return area_normal(X, mesh.triangles[f]);
 }
 
-// The sine of a triangle's smallest angle, which lies opposite its shortest side: twice its
-// area over the product of its two longer sides (0 for a triangle of no area).
+// The sine of a triangle's smallest angle, which lies between its two longer sides: the norm of
+// their cross product over the product of their lengths (0 for a triangle of no area). The sides
+// are first divided by their largest coordinate, so that no square underflows or overflows.
 inline double smallest_angle_sine(const Points& X, const std::array<Index, 3>& t)
 {
-  std::array<double, 3> sides = {(point(X, t[1]) - point(X, t[0])).squaredNorm(),
-                                 (point(X, t[2]) - point(X, t[1])).squaredNorm(),
-                                 (point(X, t[0]) - point(X, t[2])).squaredNorm()};
-  std::sort(sides.begin(), sides.end());
-  const double longer = std::sqrt(sides[1]) * std::sqrt(sides[2]);
-  return longer > 0 ? area_normal(X, t).norm() / longer : 0.;
+  std::array<Eigen::Vector3d, 3> sides = {Eigen::Vector3d(point(X, t[1]) - point(X, t[0])),
+                                          Eigen::Vector3d(point(X, t[2]) - point(X, t[1])),
+                                          Eigen::Vector3d(point(X, t[0]) - point(X, t[2]))};
+  const double largest = (std::max)({sides[0].cwiseAbs().maxCoeff(), sides[1].cwiseAbs().maxCoeff(),
+                                      sides[2].cwiseAbs().maxCoeff()});
+  if(!(largest > 0))
+    return 0.;
+  for(Eigen::Vector3d& side : sides)
+    side /= largest;
+  std::sort(sides.begin(), sides.end(),
+            [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.squaredNorm() < b.squaredNorm(); });
+  return sides[1].cross(sides[2]).norm() / (sides[1].norm() * sides[2].norm());
 }
 
 inline Eigen::Vector3d centroid(const Hinge_mesh& mesh, const Points& X, std::size_t f)

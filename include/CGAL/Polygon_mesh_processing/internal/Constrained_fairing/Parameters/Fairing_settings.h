@@ -51,10 +51,13 @@ constexpr double default_interface_sliver_angle = 6;
 
 // The smallest angle, in degrees, under which the repair after the descent pulls a triangle of a
 // multi-label surface back towards its start (Crossing_repair.h), unless it started smaller.
-// Where the bounds and the junction lines hold a needle against the barrier, it ends between 4
-// and 6 degrees on the atlases of label_map_topology. Pulled under 5 degrees, their energy rose by
-// 0.1 to 1 %; every triangle of a quality under a 6-degree needle's, 3.5 to 11 times (design notes).
+// Where the bounds and the junction lines hold a needle against the barrier, the descent leaves
+// it between 4 and 6 degrees on the atlases of label_map_topology. Pulling back the triangles
+// under 5 degrees raised their energy by 0.1 to 1 %; pulling back every triangle of a quality
+// under a 6-degree needle's, 3.5 to 11 times (design notes).
 constexpr double interface_repair_angle = 5;
+static_assert(interface_repair_angle < default_interface_sliver_angle,
+              "the repair takes over where the barrier leaves needles, under its angle");
 
 // The weight of the curves' term (Curve_bending.h: a multi-label surface's junction lines, a
 // mesh's creases), per inner point of a curve, against the bending energy's hinges.

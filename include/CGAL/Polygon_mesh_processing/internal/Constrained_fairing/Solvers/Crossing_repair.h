@@ -2,16 +2,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Crossings: two triangles of a soup that pass through each other. A promise, then how it is
-// kept: the faired soup has no crossing that its input did not have, and no triangle whose
-// smallest angle is under both interface_repair_angle (Fairing_settings.h) and its start's. The
+// kept: no triangle of the faired soup crosses another unless it crossed one in the input, and
+// no triangle's smallest angle is under both interface_repair_angle (Fairing_settings.h) and its
+// start's. The
 // bounds keep the points of a label map apart (label_surface_nets()), but not the triangles
 // between them: where two sheets of a surface are pressed within their boxes (a ribbon one voxel
 // thick, sheets that meet at a junction), a faired triangle may pass through another. The repair
 // finds the crossing triangles (Triangle_crossings.h) and pulls their points halfway back towards
-// where they started, round after round, a point that was pulled crossing_repair_rounds times all
-// the way: the points end between where the descent left them and where they started, within
+// where they started, round after round, a point pulled crossing_repair_rounds times halfway all
+// the way at its next pull: the points end between where the descent left them and where they started, within
 // their bounds, which are convex, and every crossing goes but those of triangles that crossed at
-// the start already. Needles are pulled back too: a point pulled while its neighbours stay can
+// the start already (a triangle pulled back may still meet one of these, which stays). Needles are pulled back too: a point pulled while its neighbours stay can
 // flatten a triangle around it into one (on the atlases of label_map_topology, every angle under
 // 4 degrees came from such pulls), and where the bounds and the junction lines hold a needle
 // against the barrier, the barrier leaves it between 4 and 6 degrees. Such a triangle has all its
@@ -37,11 +38,11 @@ namespace Constrained_fairing {
 // The halfway pulls of a point before it is pulled back all the way.
 constexpr std::size_t crossing_repair_rounds = 6;
 
-// Pulls the points of the triangles of X that cross, where they did not cross in X0, and of those
-// whose smallest angle's sine (smallest_angle_sine()) is under both `smallest_sine` and its sine
-// in X0, back towards X0 until none is left; returns the number of points pulled.
+// Pulls the points of the triangles of X that cross, where they did not cross in X0, and of the
+// needles, whose smallest angle's sine (smallest_angle_sine()) is under both `smallest_sine` and
+// its sine in X0, back towards X0 until none is left; returns the number of points pulled.
 template <typename Bound>
-std::size_t repair_crossings_and_slivers(const std::vector<std::array<Index, 3> >& triangles, const Bound& bound,
+std::size_t repair_crossings_and_needles(const std::vector<std::array<Index, 3> >& triangles, const Bound& bound,
                                          const std::vector<bool>& moving, double smallest_sine, const Points& X0,
                                          Points& X)
 {
@@ -49,13 +50,21 @@ std::size_t repair_crossings_and_slivers(const std::vector<std::array<Index, 3> 
   const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
   std::vector<std::size_t> pulls(n, 0);
   std::size_t pulled = 0;
-  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), sliver(m);
-  const auto worse = [&](std::size_t f) {
-    const double sine = smallest_angle_sine(X, triangles[f]);
-    return sine < smallest_sine && sine < smallest_angle_sine(X0, triangles[f]);
+  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), needle(m);
+  std::vector<double> start_sine(m, 0.);
+  if(smallest_sine > 0)
+    for(std::size_t f = 0; f < m; ++f)
+      start_sine[f] = smallest_angle_sine(X0, triangles[f]);
+  // A triangle back at its start is never a needle, whatever the rounding of its sine.
+  const auto is_needle = [&](std::size_t f) {
+    const auto& t = triangles[f];
+    if(point(X, t[0]) == point(X0, t[0]) && point(X, t[1]) == point(X0, t[1]) && point(X, t[2]) == point(X0, t[2]))
+      return false;
+    const double sine = smallest_angle_sine(X, t);
+    return sine < smallest_sine && sine < start_sine[f];
   };
   for(std::size_t f = 0; f < m; ++f)
-    sliver[f] = worse(f);
+    needle[f] = is_needle(f);
   const auto pullable = [&](Index v) { return moving[v] && pulls[v] <= crossing_repair_rounds; };
   for(;;)
   {
@@ -74,7 +83,7 @@ std::size_t repair_crossings_and_slivers(const std::vector<std::array<Index, 3> 
     std::vector<bool> moved(n, false);
     any = false;
     for(std::size_t f = 0; f < m; ++f)
-      if((crossing[f] && !inherited[f]) || sliver[f])
+      if((crossing[f] && !inherited[f]) || needle[f])
         for(Index v : triangles[f])
           if(pullable(v) && !moved[v])
             moved[v] = any = true;
@@ -93,7 +102,7 @@ std::size_t repair_crossings_and_slivers(const std::vector<std::array<Index, 3> 
         bound.project(X, v);
       }
     for(std::size_t f = 0; f < m; ++f)
-      sliver[f] = changed[f] && worse(f);
+      needle[f] = changed[f] && is_needle(f);
     // A triangle crosses now only if it crossed before or one of its points moved.
     for(std::size_t f = 0; f < m; ++f)
       changed[f] = changed[f] || crossing[f];
