@@ -1,7 +1,8 @@
 // The defaults as the documentation states them, against the settings (Fairing_settings.h): the
 // reference manual's named parameters (constrained_fairing.h) and its repair of label surfaces
-// (constrained_fairing_of_interfaces.h), the user manual, the README and the tool's usage. A default changed in the code fails here until every text that states it is
-// changed too; this runs in every build, with or without the Python module (whose docstrings
+// (constrained_fairing_of_interfaces.h), the user manual, the README and the tool's usage. A
+// default changed in the code fails here until every text that states it is changed too; this runs
+// in every build, with or without the Python module (whose docstrings
 // python/tests/test_defaults.py checks against the same settings).
 
 #include "test_support.h"

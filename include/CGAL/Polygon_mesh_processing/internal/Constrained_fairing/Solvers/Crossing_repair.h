@@ -1,23 +1,23 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Crossings: two triangles of a soup that pass through each other. A promise, then how it is
-// kept: no triangle of the faired soup crosses another unless it crossed one in the input, and
-// no triangle's smallest angle is under both interface_repair_angle (Fairing_settings.h) and its
-// start's. The
-// bounds keep the points of a label map apart (label_surface_nets()), but not the triangles
-// between them: where two sheets of a surface are pressed within their boxes (a ribbon one voxel
-// thick, sheets that meet at a junction), a faired triangle may pass through another. The repair
-// finds the crossing triangles (Triangle_crossings.h) and pulls their points halfway back towards
-// where they started, round after round, a point pulled crossing_repair_rounds times halfway all
-// the way at its next pull: the points end between where the descent left them and where they started, within
-// their bounds, which are convex, and every crossing goes but those of triangles that crossed at
-// the start already (a triangle pulled back may still meet one of these, which stays). Needles are pulled back too: a point pulled while its neighbours stay can
-// flatten a triangle around it into one (on the atlases of label_map_topology, every angle under
-// 4 degrees came from such pulls), and where the bounds and the junction lines hold a needle
-// against the barrier, the barrier leaves it between 4 and 6 degrees. Such a triangle has all its
-// points pulled, so that it goes back towards its start as a whole, until its smallest angle is
-// no longer under both, or it is its start.
+// Crossings: two triangles of a soup that pass through each other. A promise, then how it is kept:
+// no triangle of the faired soup crosses another unless it crossed one in the input, and no
+// triangle's smallest angle is under both interface_repair_angle (Fairing_settings.h) and its
+// start's. The bounds keep the points of a label map apart (label_surface_nets()), but not the
+// triangles between them: where two sheets of a surface are pressed within their boxes (a ribbon
+// one voxel thick, sheets that meet at a junction), a faired triangle may pass through another.
+// The repair finds the crossing triangles (Triangle_crossings.h) and pulls their points halfway
+// back towards where they started, round after round, a point pulled crossing_repair_rounds times
+// halfway all the way at its next pull: the points end between where the descent left them and
+// where they started, within their bounds, which are convex, and every crossing goes but those of
+// triangles that crossed at the start already (a triangle pulled back may still meet one of these,
+// which stays). Needles are pulled back too: a point pulled while its neighbours stay can flatten
+// a triangle around it into one (on the atlases of label_map_topology, every angle under 4 degrees
+// came from such pulls), and where the bounds and the junction lines hold a needle against the
+// barrier, the barrier leaves it between 4 and 6 degrees. Such a triangle has all its points
+// pulled, so that it goes back towards its start as a whole, until its smallest angle is no longer
+// under both, or it is its start.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
