@@ -41,10 +41,10 @@ not move.
 
 After the descent, the points of a triangle that passes through another, where it crossed none in
 the input, and those of a triangle whose smallest angle is under both 5 degrees and its own in the
-input, are pulled back towards their input positions, halfway at each of a point's
-first six pulls and all the way at its seventh: no triangle of the faired soup crosses another
-unless it crossed one in the input, and no triangle's smallest angle is under both 5 degrees and
-its input's (with `sliver_barrier_weight(0)`, the crossings alone).
+input, are pulled back towards their input positions, halfway at each of a point's first six
+pulls and all the way at its seventh: two triangles of the faired soup cross only where one of
+them crossed a triangle in the input, and no triangle's smallest angle is under both 5 degrees
+and its input's (with `sliver_barrier_weight(0)`, the crossings alone).
 
 The bound and the contract are those of `constrained_fairing()`, with the points numbered in
 `points`: the per-point maps are property maps whose key is a point's index (`std::size_t`);

@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Crossings: two triangles of a soup that pass through each other. A promise, then how it is kept:
-// no triangle of the faired soup crosses another unless it crossed one in the input, and no
-// triangle's smallest angle is under both interface_repair_angle (Fairing_settings.h) and its
-// start's. The bounds keep the points of a label map apart (label_surface_nets()), but not the
+// two triangles of the faired soup cross only where one of them crossed a triangle in the input,
+// and no triangle's smallest angle is under both interface_repair_angle (Fairing_settings.h) and
+// its start's. The bounds keep the points of a label map apart (label_surface_nets()), but not the
 // triangles between them: where two sheets of a surface are pressed within their boxes (a ribbon
 // one voxel thick, sheets that meet at a junction), a faired triangle may pass through another.
 // The repair finds the crossing triangles (Triangle_crossings.h) and pulls their points halfway
