@@ -53,7 +53,7 @@ constexpr double default_interface_sliver_angle = 6;
 // multi-label surface back towards its start (Crossing_repair.h), unless it started smaller.
 // Where the bounds and the junction lines hold a needle against the barrier, the descent leaves
 // it between 4 and 6 degrees on the atlases of label_map_topology. Pulling back the triangles
-// under 5 degrees raised their energy by 0.1 to 1 %; pulling back every triangle of a quality
+// under 5 degrees raised their energy by 0.2 to 1.1 %; pulling back every triangle of a quality
 // under a 6-degree needle's, 3.5 to 11 times (design notes).
 constexpr double interface_repair_angle = 5;
 static_assert(interface_repair_angle < default_interface_sliver_angle,
