@@ -8,16 +8,16 @@
 // triangles between them: where two sheets of a surface are pressed within their boxes (a ribbon
 // one voxel thick, sheets that meet at a junction), a faired triangle may pass through another.
 // The repair finds the crossing triangles (Triangle_crossings.h) and pulls their points halfway
-// back towards where they started, round after round, a point pulled crossing_repair_rounds times
-// halfway all the way at its next pull: the points end between where the descent left them and
-// where they started, within their bounds, which are convex, and every crossing goes but those of
-// triangles that crossed at the start already (a triangle pulled back may still meet one of these,
-// which stays). Needles are pulled back too: a point pulled while its neighbours stay can flatten
-// a triangle around it into one (on the atlases of label_map_topology, every angle under 4 degrees
-// came from such pulls), and where the bounds and the junction lines hold a needle against the
-// barrier, the barrier leaves it between 4 and 6 degrees. Such a triangle has all its points
-// pulled, so that it goes back towards its start as a whole, until its smallest angle is no longer
-// under both, or it is its start.
+// back towards where they started, round after round, a point pulled halfway
+// crossing_repair_rounds times going all the way at its next pull: the points end between where
+// the descent left them and where they started, within their bounds, which are convex, and every
+// crossing goes but those of triangles that crossed at the start already (a triangle pulled back
+// may still meet one of these, which stays). Needles are pulled back too: a point pulled while its
+// neighbours stay can flatten a triangle around it into one (on the atlases of label_map_topology,
+// every angle under 4 degrees came from such pulls), and where the bounds and the junction lines
+// hold a needle against the barrier, the barrier leaves it between 4 and 6 degrees. Such a
+// triangle has all its points pulled, so that it goes back towards its start as a whole, until its
+// smallest angle is no longer under both, or it is its start.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
@@ -58,6 +58,8 @@ std::size_t repair_crossings_and_needles(const std::vector<std::array<Index, 3> 
   // A triangle back at its start is never a needle, whatever the rounding of its sine.
   const auto is_needle = [&](std::size_t f) {
     const auto& t = triangles[f];
+    if(!(smallest_sine > 0))
+      return false;
     if(point(X, t[0]) == point(X0, t[0]) && point(X, t[1]) == point(X0, t[1]) && point(X, t[2]) == point(X0, t[2]))
       return false;
     const double sine = smallest_angle_sine(X, t);
