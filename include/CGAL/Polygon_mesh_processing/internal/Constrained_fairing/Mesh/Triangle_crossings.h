@@ -43,21 +43,30 @@ public:
   // triangles (all where `changed` is empty).
   std::vector<bool> find(const Points& X, const std::vector<bool>& changed) const
   {
-    std::vector<Box> all, some;
+    std::vector<Box> all;
     all.reserve(m_triangles.size());
     for(std::size_t f = 0; f < m_triangles.size(); ++f)
-    {
       all.push_back(box(X, f));
-      if(!changed.empty() && changed[f])
-        some.push_back(all.back());
+    // CGAL's parallel box intersection copies its ranges nine times over: pointers, as in CGAL's
+    // self-intersection test, not boxes (0.4 GB more on a map of 0.85 M triangles).
+    std::vector<const Box*> handles, some;
+    if(changed.empty())
+    {
+      handles.reserve(all.size());
+      for(const Box& b : all)
+        handles.push_back(&b);
     }
+    else
+      for(std::size_t f = 0; f < m_triangles.size(); ++f)
+        if(changed[f])
+          some.push_back(&all[f]);
     // Flags that the threads of the box intersection set: the set found does not depend on the
     // order of the pairs, as a pair is skipped only when both its triangles cross already.
     std::vector<std::atomic<bool> > flags(m_triangles.size());
     for(auto& flag : flags)
       flag.store(false, std::memory_order_relaxed);
-    const auto test = [&](const Box& a, const Box& b) {
-      const std::size_t f = a.info(), g = b.info();
+    const auto test = [&](const Box* a, const Box* b) {
+      const std::size_t f = a->info(), g = b->info();
       if(f != g && (!flags[f].load(std::memory_order_relaxed) || !flags[g].load(std::memory_order_relaxed)) &&
          cross(X, m_triangles[f], m_triangles[g]))
       {
@@ -70,10 +79,10 @@ public:
     // triangles.
     const std::ptrdiff_t cutoff = 2000;
     if(changed.empty())
-      box_self_intersection_d<Parallel_if_available_tag>(all.begin(), all.end(), test, cutoff);
+      box_self_intersection_d<Parallel_if_available_tag>(handles.begin(), handles.end(), test, cutoff);
     else if(!some.empty())
     {
-      std::vector<Box> near = boxes_near(some, all);
+      std::vector<const Box*> near = boxes_near(some, all);
       box_intersection_d<Parallel_if_available_tag>(some.begin(), some.end(), near.begin(), near.end(), test, cutoff);
     }
     std::vector<bool> crossing(m_triangles.size());
@@ -87,14 +96,19 @@ private:
   // `some` meets, the cells as large as the largest of `some`. A pass over `all` with a few
   // lookups each: the repair's rounds change a few triangles, and the box intersection with all
   // of them sorted every box in every round (5 s of Harvard-Oxford's repair).
-  static std::vector<Box> boxes_near(const std::vector<Box>& some, const std::vector<Box>& all)
+  static std::vector<const Box*> boxes_near(const std::vector<const Box*>& some, const std::vector<Box>& all)
   {
+    std::vector<const Box*> near;
     double size = 0;
-    for(const Box& b : some)
+    for(const Box* b : some)
       for(int c = 0; c < 3; ++c)
-        size = (std::max)(size, b.max_coord(c) - b.min_coord(c));
+        size = (std::max)(size, b->max_coord(c) - b->min_coord(c));
     if(!(size > 0) || !std::isfinite(size))
-      return all;
+    {
+      for(const Box& b : all)
+        near.push_back(&b);
+      return near;
+    }
     using Cell = std::array<std::int64_t, 3>;
     // clamped, which keeps the cells of boxes that meet in common
     const auto cell = [size](double x) { return std::int64_t((std::max)(-1e15, (std::min)(1e15, std::floor(x / size)))); };
@@ -108,9 +122,9 @@ private:
     };
     std::vector<Cell> marked;
     Cell lo, hi, k;
-    for(const Box& b : some)
+    for(const Box* b : some)
     {
-      cells(b, lo, hi);
+      cells(*b, lo, hi);
       for(k[0] = lo[0]; k[0] <= hi[0]; ++k[0])
         for(k[1] = lo[1]; k[1] <= hi[1]; ++k[1])
           for(k[2] = lo[2]; k[2] <= hi[2]; ++k[2])
@@ -118,7 +132,6 @@ private:
     }
     std::sort(marked.begin(), marked.end());
     marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
-    std::vector<Box> near;
     for(const Box& b : all)
     {
       // a box over many cells (a long triangle) is kept without looking them up
@@ -128,7 +141,7 @@ private:
           for(k[2] = lo[2]; !meets && k[2] <= hi[2]; ++k[2])
             meets = std::binary_search(marked.begin(), marked.end(), k);
       if(meets)
-        near.push_back(b);
+        near.push_back(&b);
     }
     return near;
   }
