@@ -6,8 +6,9 @@
 // the outside included), a label against the array's side, labels whose voxels touch only along
 // an edge or at a corner, in every orientation, and worst cases: checkerboards of two and three
 // labels, one-voxel tubes along every diagonal, tilted one-voxel sheets, a label that meets itself
-// around an edge, cells of real segmentations that need a junction point or quarter boxes, blocks
-// of them whose points need untangling, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
+// around an edge, cells of real segmentations that need a junction point, quarter boxes or a label
+// left whole where two are pinched, blocks of them whose points need untangling, random voxels;
+// cubic voxels and 1 x 1 x 3 ones. Checked:
 //  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
 //    and no two boxes meet; a point off its cell's centre has a box smaller than the cell's;
 //  - each triangle separates its two labels with its normal from the first into the second (a
@@ -385,10 +386,13 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
   contacts.two_sheets = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
   cases.emplace_back(contacts, true);
   // Cells found in cortical atlases, with their neighbours (4 x 4 x 4 voxels, labels renumbered):
-  // holes of a ridge that border several interfaces, capped around a junction point; and two
-  // points whose faces lie in one octant of their cell, their boxes a quarter of it apart.
+  // holes of a ridge that border several interfaces, capped around a junction point; two points
+  // whose faces lie in one octant of their cell, their boxes a quarter of it apart; and a label
+  // and the background each touching itself at the centre through a corner, two labels around
+  // (their seeds tie together: the background is left whole).
   for(const char* cell : {"1114111414244424111411144424444411541124424444441145114534444444",
-                          "3322333233323333321133313321333332113122321233322211321222223322"})
+                          "3322333233323333321133313321333332113122321233322211321222223322",
+                          "3344114411141111333333031114111122222223003010002222222222220333"})
     cases.emplace_back(generated({4, 4, 4}, {1, 1, 1},
                                  [cell](long i, long j, long k) { return Label(cell[16 * i + 4 * j + k] - '0'); }),
                        true);

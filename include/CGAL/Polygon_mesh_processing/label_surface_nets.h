@@ -119,7 +119,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   // Dual cell c = (ci, cj, ck), each in [0, n], lies between voxels c - 1 and c on each axis.
   const std::size_t cells[3] = {size[0] + 1, size[1] + 1, size[2] + 1};
   const auto cell_at = [&](const Signed c[3]) {
-    return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, margin);
+    return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, background, margin);
   };
 
   // The points, cell by cell, each at the centre of its box; the cells of more than one point are

@@ -26,6 +26,10 @@
 // becomes a ridge of points instead of a cone, and the regions no longer meet. The holes
 // the ridge leaves are capped: by a fan of triangles of one interface where they border one, else
 // by a fan around a junction, a point of no face, for each group of holes that share segments.
+// Two labels pinched at one sheet, with two others around, can tie their seeds together (a node
+// that borders a region of each): then one of them is left whole, its regions passing each other
+// through the gap that the other's ridge opens, the background first (it has no surface of its
+// own); a label so left touches itself at the ridge, and label_surface() splits it there.
 //
 // Each point's box: the cell shrunk by `margin` (a fraction of the spacing) on every side for a
 // cell of one point; with more, the half or whole of each axis that the quarters of its faces
@@ -33,8 +37,8 @@
 // lie farthest apart, at the centre plane or, where both lie on one side of it, at the quarter
 // plane; a junction takes an octant that no other box meets; and each box keeps `margin` from the
 // planes that cut it. The boxes of different points never meet, so no two points can meet. Where
-// the seeds conflict or no box can be cut apart, the cell keeps one point per sheet: its labels'
-// surfaces touch there, and label_surface() splits them.
+// the seeds still conflict or no box can be cut apart, the cell keeps one point per sheet: its
+// labels' surfaces touch there, and label_surface() splits them.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
@@ -45,6 +49,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -271,7 +276,7 @@ class Dual_cell
 public:
   // `label(d0, d1, d2)`: the label of the voxel at offset d (each in -2 .. 3) from the block's first.
   template <typename LabelAt>
-  Dual_cell(const LabelAt& label, double margin) : m_nodes(label)
+  Dual_cell(const LabelAt& label, Label background, double margin) : m_nodes(label)
   {
     m_point.fill(none);
     if(m_nodes.uniform())
@@ -279,8 +284,30 @@ public:
     const std::array<int, 12> sheet = m_nodes.sheets();
     Dual_cell_seeds seeds;
     seed_doubled_edges(label, sheet, seeds);
-    seed_pinched_labels(sheet, seeds);
-    place_points(sheet, seeds);
+    seed_pinched_labels(sheet, seeds, std::nullopt);
+    // Two pinched labels may tie their seeds together; then one of them is left whole, its
+    // regions joined through the gap that the other's ridge opens between its own: the first
+    // label that unties the seeds and whose ridges close, the background (which has no surface
+    // of its own) before the others in the block's order.
+    bool placed = false;
+    if(seeds.conflict())
+    {
+      boost::container::static_vector<Label, 8> labels = block_labels();
+      std::stable_partition(labels.begin(), labels.end(), [background](Label l) { return l == background; });
+      for(const Label whole : labels)
+      {
+        Dual_cell_seeds fewer;
+        seed_doubled_edges(label, sheet, fewer);
+        seed_pinched_labels(sheet, fewer, whole);
+        if(!fewer.conflict() && place_points(sheet, fewer))
+        {
+          placed = true;
+          break;
+        }
+      }
+    }
+    if(!placed)
+      place_points(sheet, seeds);
     if(!make_boxes(margin))
     {
       one_point_per_sheet(sheet);
@@ -347,10 +374,12 @@ private:
 
   // Pinched labels: a label with two regions or more at one sheet; each region seeds the nodes
   // of its faces there.
-  void seed_pinched_labels(const std::array<int, 12>& sheet, Dual_cell_seeds& seeds) const
+  void seed_pinched_labels(const std::array<int, 12>& sheet, Dual_cell_seeds& seeds, std::optional<Label> whole) const
   {
     for(const Label pinched : block_labels())
     {
+      if(pinched == whole)
+        continue;
       // The id of each (sheet, region) of the label, where a sheet holds two regions or more.
       std::array<std::array<int, 8>, 12> id_of;
       for(auto& ids : id_of)
@@ -408,7 +437,8 @@ private:
 
   // Every node takes a point: its seed's, the nearest seed's in its sheet (breadth first), or
   // its sheet's own; on a conflict, or where the ridges cannot be closed, one point per sheet.
-  void place_points(const std::array<int, 12>& sheet, const Dual_cell_seeds& seeds)
+  // Returns false where a split was wanted but not made.
+  bool place_points(const std::array<int, 12>& sheet, const Dual_cell_seeds& seeds)
   {
     std::array<int, 12> point_of_node;
     const int count = seeds.points(point_of_node);
@@ -436,7 +466,11 @@ private:
         point_of_node[std::size_t(v)] = (split ? count : 0) + sheet[std::size_t(v)];
     number_points(point_of_node);
     if(split && !close_ridges())
+    {
       one_point_per_sheet(sheet);
+      return false;
+    }
+    return count == 0 || split;
   }
 
   void one_point_per_sheet(const std::array<int, 12>& sheet)
