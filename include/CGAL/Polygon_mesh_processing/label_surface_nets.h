@@ -61,8 +61,9 @@ outside the array count as `background`.
   leaves in the interfaces are capped by triangles of the cell's points, around one more point
   in a free octant of the cell where they border several interfaces. So every label's surface is
   a manifold (made by `label_surface()` without splitting), except in rare cells where two labels
-  each touch themselves at the centre with others around, and no two boxes meet: the points stay
-  apart through any fairing within their boxes.
+  each touch themselves at the centre with others around: there one of them (the background
+  first, which has no surface) is left touching itself and the other is split apart. No two
+  boxes meet: the points stay apart through any fairing within their boxes.
 - Points of cells of several points, at the centres of their boxes, can fold a triangle onto its
   neighbour or through another: the points of such triangles, of any cell, move to the mean of
   their neighbours (with the points around them after the first round), within seven eighths

@@ -26,10 +26,12 @@
 // becomes a ridge of points instead of a cone, and the regions no longer meet. The holes
 // the ridge leaves are capped: by a fan of triangles of one interface where they border one, else
 // by a fan around a junction, a point of no face, for each group of holes that share segments.
-// Two labels pinched at one sheet, with two others around, can tie their seeds together (a node
-// that borders a region of each): then one of them is left whole, its regions passing each other
-// through the gap that the other's ridge opens, the background first (it has no surface of its
-// own); a label so left touches itself at the ridge, and label_surface() splits it there.
+// Two labels pinched at one sheet, with two others around, can tie their seeds together (each
+// node borders a region of each): then a label is left whole, unseeded, its regions passing each
+// other through the gap that the other's ridge opens: the first whose leaving unties the seeds
+// and lets the ridges close, the background first (it has no surface of its own, so nothing is
+// left touching itself), then the block's labels in order. A label so left touches itself at the
+// ridge, and label_surface() splits it there.
 //
 // Each point's box: the cell shrunk by `margin` (a fraction of the spacing) on every side for a
 // cell of one point; with more, the half or whole of each axis that the quarters of its faces
