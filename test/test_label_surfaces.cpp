@@ -7,8 +7,8 @@
 // an edge or at a corner, in every orientation, and worst cases: checkerboards of two and three
 // labels, one-voxel tubes along every diagonal, tilted one-voxel sheets, a label that meets itself
 // around an edge, cells of real segmentations that need a junction point, quarter boxes or a label
-// left whole where two are pinched, blocks of them whose points need untangling, random voxels;
-// cubic voxels and 1 x 1 x 3 ones. Checked:
+// left whole where two are pinched, blocks of them whose points need untangling or whose faces'
+// polygons need a search for their ears, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
 //  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
 //    and no two boxes meet; a point off its cell's centre has a box smaller than the cell's;
 //  - each triangle separates its two labels with its normal from the first into the second (a
@@ -401,6 +401,18 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
     cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
                                  [&block](long i, long j, long k) { return Label(block[std::size_t(36 * i + 6 * j + k)] - '0'); }),
                        true);
+  // A block of inia19 (labels 1 to 16 as '1' to '@') with a face whose polygon, a corner of two
+  // points next to a corner of one, a greedy cut of ears left with no ear of opposite cells: it
+  // cut a triangle two faces of one label shared, and label_surface() split the label there.
+  const std::string inia19_block = "122222112222311222311144335555635555227777122227812222339122"
+                                   "335522:33552229999829997882927382922:38922:33992827;;;822;;9"
+                                   "88<799:88<99:=82<9::389<=87;;;=88:;;:8877;:=822;::=82;::3882"
+                                   ":>8?;;:>88;;::@87;::@82;::@88;:::@88";
+  cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
+                               [&inia19_block](long i, long j, long k) {
+                                 return Label(inia19_block[std::size_t(36 * i + 6 * j + k)] - '0');
+                               }),
+                     true);
   std::mt19937 random(7);
   for(int labels : {2, 3, 5})
     for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})

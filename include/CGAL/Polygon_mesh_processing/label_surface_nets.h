@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -178,9 +179,55 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   // cells around their face, counterclockwise seen from b; at each, the face's corner is one point
   // or, where its two dual edges there have different points, both. The polygon is cut into
   // triangles, pointing from a into b, by diagonals between opposite cells only: a diagonal
-  // between neighbouring cells could be an edge of other faces too. A quad gives (0, 1, 2) and
-  // (0, 2, 3).
+  // between neighbouring cells could be an edge of other faces too, and two faces of one label
+  // around a dual edge could cut the same triangle. A quad gives (0, 1, 2) and (0, 2, 3).
   std::vector<std::pair<std::size_t, int> > polygon; // (point, corner)
+  std::vector<std::array<std::size_t, 3> > ears;
+  using Polygon = std::vector<std::pair<std::size_t, int> >;
+  const auto ear_at = [](const Polygon& left, std::size_t e) {
+    const std::size_t m = left.size();
+    return std::array<std::size_t, 3>{left[(e + m - 1) % m].first, left[e].first, left[(e + 1) % m].first};
+  };
+  const auto flat = [&](const std::array<std::size_t, 3>& t) {
+    const auto p = [&](std::size_t v) {
+      return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]), CGAL::to_double(points[v][2]));
+    };
+    return CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
+  };
+  // The ears whose diagonal joins opposite cells, those whose triangle is not flat (points of
+  // split cells can line up) first; flat: the ear, or what a quad leaves after it. A triangle is
+  // its own ear, once.
+  const auto opposite_ears = [&](const Polygon& left) {
+    const std::size_t m = left.size();
+    if(m == 3)
+      return std::vector<std::size_t>{1};
+    std::vector<std::size_t> order, flat_ones;
+    for(std::size_t e = 1; e <= m; ++e)
+      if((left[(e + m - 1) % m].second + 2) % 4 == left[(e + 1) % m].second)
+      {
+        const bool is_flat = flat(ear_at(left, e % m)) ||
+                             (m == 4 && flat({left[(e + 1) % m].first, left[(e + 2) % m].first, left[(e + 3) % m].first}));
+        (is_flat ? flat_ones : order).push_back(e % m);
+      }
+    order.insert(order.end(), flat_ones.begin(), flat_ones.end());
+    return order;
+  };
+  // Ears cut one after the other, each the first of opposite_ears(); where one leaves a polygon
+  // that no ear of opposite cells can cut (a corner of two points next to it), the next instead.
+  const std::function<bool(const Polygon&)> cut = [&](const Polygon& left) {
+    if(left.size() < 3)
+      return true;
+    for(std::size_t e : opposite_ears(left))
+    {
+      Polygon rest = left;
+      rest.erase(rest.begin() + std::ptrdiff_t(e));
+      ears.push_back(ear_at(left, e));
+      if(cut(rest))
+        return true;
+      ears.pop_back();
+    }
+    return false;
+  };
   for(int axis = 0; axis < 3; ++axis)
   {
     const int u = (axis + 1) % 3, w = (axis + 2) % 3; // (axis, u, w) is right-handed
@@ -223,42 +270,24 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
             if(to != from)
               polygon.emplace_back(to, k);
           }
-          while(polygon.size() >= 3)
+          ears.clear();
+          if(!cut(polygon))
           {
-            const std::size_t m = polygon.size();
-            const auto ear_at = [&](std::size_t e) {
-              return std::array<std::size_t, 3>{polygon[(e + m - 1) % m].first, polygon[e].first,
-                                                polygon[(e + 1) % m].first};
-            };
-            const auto flat = [&](const std::array<std::size_t, 3>& t) {
-              const auto p = [&](std::size_t v) {
-                return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]),
-                                      CGAL::to_double(points[v][2]));
-              };
-              return CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
-            };
-            // Flat: the ear, or what a quad leaves after it.
-            const auto flat_ear = [&](std::size_t e) {
-              return flat(ear_at(e)) ||
-                     (m == 4 && flat({polygon[(e + 1) % m].first, polygon[(e + 2) % m].first,
-                                      polygon[(e + 3) % m].first}));
-            };
-            // The first ear whose diagonal joins opposite cells and whose triangle is not flat
-            // (points of split cells can line up), else the first of opposite cells.
-            std::size_t ear = m, any = m;
-            for(std::size_t e = 1; e <= m && ear == m; ++e)
-              if(m == 3 || (polygon[(e + m - 1) % m].second + 2) % 4 == polygon[(e + 1) % m].second)
-              {
-                if(any == m)
-                  any = e % m;
-                if(!flat_ear(e % m))
-                  ear = e % m;
-              }
-            ear = ear != m ? ear : any != m ? any : 1;
-            const std::array<std::size_t, 3> t = ear_at(ear);
+            // No way to cut it by ears of opposite cells alone: at each step the first such ear,
+            // where there is one, else the first ear.
+            ears.clear();
+            while(polygon.size() >= 3)
+            {
+              const std::vector<std::size_t> order = opposite_ears(polygon);
+              const std::size_t e = order.empty() ? 1 : order.front();
+              ears.push_back(ear_at(polygon, e));
+              polygon.erase(polygon.begin() + std::ptrdiff_t(e));
+            }
+          }
+          for(const std::array<std::size_t, 3>& t : ears)
+          {
             triangles.push_back({Point_index(t[0]), Point_index(t[1]), Point_index(t[2])});
             face_labels.push_back({la, lb});
-            polygon.erase(polygon.begin() + std::ptrdiff_t(ear));
           }
         }
   }
