@@ -121,7 +121,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   // Dual cell c = (ci, cj, ck), each in [0, n], lies between voxels c - 1 and c on each axis.
   const std::size_t cells[3] = {size[0] + 1, size[1] + 1, size[2] + 1};
   const auto cell_at = [&](const Signed c[3]) {
-    return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, background, margin);
+    return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, background,
+                margin);
   };
 
   // The points, cell by cell, each at the centre of its box; the cells of more than one point are
@@ -190,7 +191,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   };
   const auto flat = [&](const std::array<std::size_t, 3>& t) {
     const auto p = [&](std::size_t v) {
-      return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]), CGAL::to_double(points[v][2]));
+      return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]),
+                            CGAL::to_double(points[v][2]));
     };
     return CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
   };
@@ -205,8 +207,9 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     for(std::size_t e = 1; e <= m; ++e)
       if((left[(e + m - 1) % m].second + 2) % 4 == left[(e + 1) % m].second)
       {
-        const bool is_flat = flat(ear_at(left, e % m)) ||
-                             (m == 4 && flat({left[(e + 1) % m].first, left[(e + 2) % m].first, left[(e + 3) % m].first}));
+        const bool is_flat =
+            flat(ear_at(left, e % m)) ||
+            (m == 4 && flat({left[(e + 1) % m].first, left[(e + 2) % m].first, left[(e + 3) % m].first}));
         (is_flat ? flat_ones : order).push_back(e % m);
       }
     order.insert(order.end(), flat_ones.begin(), flat_ones.end());
