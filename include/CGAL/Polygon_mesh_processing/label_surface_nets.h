@@ -11,6 +11,8 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
+#include <boost/container/static_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -182,9 +184,10 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   // triangles, pointing from a into b, by diagonals between opposite cells only: a diagonal
   // between neighbouring cells could be an edge of other faces too, and two faces of one label
   // around a dual edge could cut the same triangle. A quad gives (0, 1, 2) and (0, 2, 3).
-  std::vector<std::pair<std::size_t, int> > polygon; // (point, corner)
+  // (point, corner), two points at most per corner; held on the stack, as every face is cut
+  using Polygon = boost::container::static_vector<std::pair<std::size_t, int>, 8>;
+  Polygon polygon;
   std::vector<std::array<std::size_t, 3> > ears;
-  using Polygon = std::vector<std::pair<std::size_t, int> >;
   const auto ear_at = [](const Polygon& left, std::size_t e) {
     const std::size_t m = left.size();
     return std::array<std::size_t, 3>{left[(e + m - 1) % m].first, left[e].first, left[(e + 1) % m].first};
@@ -201,9 +204,12 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   // its own ear, once.
   const auto opposite_ears = [&](const Polygon& left) {
     const std::size_t m = left.size();
+    boost::container::static_vector<std::size_t, 8> order, flat_ones;
     if(m == 3)
-      return std::vector<std::size_t>{1};
-    std::vector<std::size_t> order, flat_ones;
+    {
+      order.push_back(1);
+      return order;
+    }
     for(std::size_t e = 1; e <= m; ++e)
       if((left[(e + m - 1) % m].second + 2) % 4 == left[(e + 1) % m].second)
       {
@@ -281,7 +287,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
             ears.clear();
             while(polygon.size() >= 3)
             {
-              const std::vector<std::size_t> order = opposite_ears(polygon);
+              const auto order = opposite_ears(polygon);
               const std::size_t e = order.empty() ? 1 : order.front();
               ears.push_back(ear_at(polygon, e));
               polygon.erase(polygon.begin() + std::ptrdiff_t(e));

@@ -284,8 +284,9 @@ public:
     if(m_nodes.uniform())
       return;
     const std::array<int, 12> sheet = m_nodes.sheets();
-    Dual_cell_seeds seeds;
-    seed_doubled_edges(label, sheet, seeds);
+    Dual_cell_seeds doubled;
+    seed_doubled_edges(label, sheet, doubled);
+    Dual_cell_seeds seeds = doubled;
     seed_pinched_labels(sheet, seeds, std::nullopt);
     // Two pinched labels may tie their seeds together; then one of them is left whole, its
     // regions joined through the gap that the other's ridge opens between its own: the first
@@ -298,8 +299,7 @@ public:
       std::stable_partition(labels.begin(), labels.end(), [background](Label l) { return l == background; });
       for(const Label whole : labels)
       {
-        Dual_cell_seeds fewer;
-        seed_doubled_edges(label, sheet, fewer);
+        Dual_cell_seeds fewer = doubled;
         seed_pinched_labels(sheet, fewer, whole);
         if(!fewer.conflict() && place_points(sheet, fewer))
         {
