@@ -5,7 +5,7 @@
 // parts, and what the detection marks on organic meshes.
 //
 //   fairing_features [--demo DIR] [--angle DEG] [--faces N] [--runs N] [--threads K]
-//                    [--parts NAME,NAME...] [--write DIR]
+//                    [--parts NAME,NAME...] [--seed S] [--write DIR]
 //
 // CAD parts (fandisk, joint, blade, part, dragknob, anchor, cube-meshed from CGAL's
 // demo data in DIR: see get_demo_meshes.sh; skipped cleanly without them): each is a coarse
@@ -20,7 +20,7 @@
 // not sharp. Methods: the default call, the accurate objective, the call with
 // `feature_angle(DEG)`, and the call given the clean sharp edges (`edge_is_constrained_map`:
 // what a perfect detection would give).
-// --parts runs only the parts named; --write writes each case's meshes into DIR, as OFF files
+// --parts runs only the parts named; --seed draws other noise (default 1); --write writes each case's meshes into DIR, as OFF files
 // with the clean mesh's connectivity (NAME_clean.off, NAME_D_noisy.off, NAME_D_default.off,
 // NAME_D_features.off) and the edges feature_angle found (NAME_D_creases.txt, a pair of vertex
 // indices per line), from which doc/make_figures.py draws the manual's figure.
@@ -224,8 +224,9 @@ int main(int argc, char* argv[])
   const std::string parts =
     "," + arguments.option("parts", "fandisk,joint,blade,part,dragknob,anchor,cube-meshed") + ",";
   const std::string out = arguments.option("write", "");
+  const auto seed = static_cast<unsigned int>(std::stoul(arguments.option("seed", "1")));
   std::cout << machine_description() << std::endl;
-  std::cout << "feature_angle(" << angle << "), runs " << runs << " (median time)" << std::endl;
+  std::cout << "feature_angle(" << angle << "), runs " << runs << " (median time), noise seed " << seed << std::endl;
 
   // ratios of feature_angle to the default call, for the geometric means
   double log_normal = 0, log_near = 0, log_rms = 0, log_time = 0, log_near_accurate = 0, log_normal_accurate = 0;
@@ -253,7 +254,7 @@ int main(int argc, char* argv[])
     for(double d : {0.25, 0.5})
     {
       Mesh noisy = clean;
-      add_noise(noisy, d * h, 1);
+      add_noise(noisy, d * h, seed);
       const std::string prefix = out.empty() ? "" : out + "/" + name + "_" + (d == 0.25 ? "0.25" : "0.5") + "_";
       if(!out.empty())
         write(prefix + "noisy.off", noisy);

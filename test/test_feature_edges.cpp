@@ -300,7 +300,7 @@ void check_straightening()
     return edges;
   };
   const auto straightened = [&](Edges edges) {
-    CF::straighten_creases(mesh, X, edges);
+    CF::straighten_creases(mesh, X, [](CF::Index) { return Eigen::Vector3d(0, 0, 1); }, 30., edges);
     return edges;
   };
   Edges line;
@@ -338,6 +338,51 @@ void check_straightening()
   both.erase(std::unique(both.begin(), both.end()), both.end());
   CHECK(both.size() == jog.size() + 2);
   CHECK(straightened(both) == jog);
+
+  // The same jog on a roof whose ridge runs through (4, 5) and (5, 6), between (5, 5) and (4, 6):
+  // the sides' planes 90 degrees apart, the face normals those of the planes (as filtered ones
+  // are). Where (5, 5) is nearer the ridge along its side's plane, by less than `jog_ratio`, the
+  // test across the crease takes the jog through it; where it is not nearer, or is nearer the
+  // other side's plane but farther from the line, the jog is kept; the line alone (sides not
+  // apart) keeps it too.
+  const Eigen::Vector2d ridge = X.block<1, 2>(at(4, 5), 0).transpose();
+  const Eigen::Vector2d along = (X.block<1, 2>(at(5, 6), 0).transpose() - ridge).normalized();
+  const Eigen::Vector2d across(along.y(), -along.x());
+  const auto side = [&](const Eigen::Vector2d& p) { return (p - ridge).dot(across); };
+  CF::Points roof(X.rows(), 3);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const Eigen::Vector2d p(double(i) + 0.5 * double(j), std::sqrt(3.) / 2 * double(j));
+      roof.row(at(i, j)) << p.x(), p.y(), std::abs(side(p));
+    }
+  const auto plane_normal = [&](double s) {
+    return Eigen::Vector3d(-s * across.x(), -s * across.y(), 1).normalized();
+  };
+  const auto roof_normal = [&](CF::Index f) {
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for(CF::Index v : mesh.triangles[f])
+      c += roof.block<1, 2>(v, 0).transpose() / 3;
+    return plane_normal(side(c) > 0 ? 1 : -1);
+  };
+  CHECK(side(roof.block<1, 2>(at(5, 5), 0).transpose()) > 0.49);
+  CHECK(side(roof.block<1, 2>(at(4, 6), 0).transpose()) < -0.49);
+  const auto on_roof = [&](const CF::Points& points, Edges edges) {
+    CF::straighten_creases(mesh, points, roof_normal, 30., edges);
+    return edges;
+  };
+  CHECK(on_roof(roof, round) == round);
+  CF::Points nearer = roof;
+  nearer.block<1, 2>(at(5, 5), 0) -= 0.15 * across.transpose();
+  nearer(at(5, 5), 2) = 0.35;
+  CHECK(on_roof(nearer, round) == jog);
+  Edges by_line = round;
+  CF::straighten_creases(mesh, nearer, [](CF::Index) { return Eigen::Vector3d(0, 0, 1); }, 30., by_line);
+  CHECK(by_line == round);
+  CF::Points lifted = roof;
+  lifted.block<1, 2>(at(5, 5), 0) -= 0.4 * across.transpose();
+  lifted(at(5, 5), 2) = 0.75;
+  CHECK(on_roof(lifted, round) == round);
 }
 
 void check_bad_angles()

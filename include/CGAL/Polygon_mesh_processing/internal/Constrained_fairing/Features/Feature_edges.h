@@ -45,6 +45,7 @@ struct Feature_detection
   static constexpr std::size_t shortest_spur = 8;
   static constexpr double jump_ratio = 1.5;
   // a jog round a vertex is swapped to it where the vertex is this many times nearer the line
+  // (where the crease's sides are not apart: below)
   static constexpr double jog_ratio = 1.5;
 };
 
@@ -145,17 +146,52 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
 // crease's angle. A chain of two or three edges from u to w through vertices on no other crease
 // edge is replaced by the hinge u w if there is one, a chain of three around a vertex x on no
 // crease by u x w, and a chain of two u y w around such a vertex x (the two triangles' other
-// side) by u x w where x is `jog_ratio` times nearer the line u w than y is, and of two
-// chains of two u y w and u z w (a diamond) the one farther from the line u w is dropped; each
-// only if the curve heads on alike on both sides of the chain (a corner of the curve is kept).
+// side) by u x w where x is nearer the crease than y is (`nearer_crease` below: across the
+// crease by the planes of its sides, whose normals `face_normal(f)` gives, where they are more
+// than `degrees` apart), and of two chains of two u y w and u z w (a diamond) the one farther
+// from the line u w is dropped; each only if the curve heads on alike on both sides of the chain
+// (a corner of the curve is kept).
 // The other moves take edges off, and a swap takes off a vertex that no swap puts back, so the
 // moves end; a smooth curve has no chain of the first two kinds (it would turn by 120 degrees
 // within one or two edges).
-inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vector<std::array<Index, 2> >& edges)
+template <typename Face_normal>
+void straighten_creases(const Hinge_mesh& mesh, const Points& X, const Face_normal& face_normal, double degrees,
+                        std::vector<std::array<Index, 2> >& edges)
 {
   if(edges.empty())
     return;
   const std::size_t n = mesh.number_of_vertices;
+  const Rows_by_vertex<Index> faces_around(n, [&](const auto& add) {
+    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for(Index v : mesh.triangles[f])
+        add(v, Index(f));
+  });
+  const auto has_corner = [](const std::array<Index, 3>& t, Index v) { return t[0] == v || t[1] == v || t[2] == v; };
+  // The plane of the faces around v that do not have `other` as a corner: the mean of their
+  // normals, through the mean of their corners but v (so that v's own noise is not in it).
+  // False where those normals cancel.
+  const auto side_plane = [&](Index v, Index other, Eigen::Vector3d& normal, double& offset) {
+    normal.setZero();
+    for(auto f = faces_around.begin(v); f != faces_around.end(v); ++f)
+      if(!has_corner(mesh.triangles[*f], other))
+        normal += face_normal(*f);
+    if(!(normal.norm() > 0))
+      return false;
+    normal.normalize();
+    offset = 0;
+    std::size_t count = 0;
+    for(auto f = faces_around.begin(v); f != faces_around.end(v); ++f)
+      if(!has_corner(mesh.triangles[*f], other))
+        for(Index c : mesh.triangles[*f])
+          if(c != v)
+          {
+            offset += normal.dot(X.row(c).transpose());
+            ++count;
+          }
+    offset /= double(count);
+    return true;
+  };
+  const double apart = std::cos(degrees * CGAL_PI / 180);
   const Rows_by_vertex<Index> neighbours(n, [&](const auto& add) {
     for(const Hinge& h : mesh.hinges)
     {
@@ -212,6 +248,21 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
     const Eigen::Vector3d a = (X.row(m) - X.row(u)).transpose(), b = (X.row(w) - X.row(u)).transpose();
     return a.cross(b).norm();
   };
+  // Whether a chain u y w should go round x instead (the vertex of its two triangles on no
+  // crease). A crease lies on the planes of both its sides, so where the sides (x's faces but
+  // the two, and y's but those) are more than the angle apart: whether x is nearer y's side's
+  // plane than y is to x's, a test across the crease whose planes average the noise, and nearer
+  // the line u w, which the noise alone can turn; where the sides are not apart, whether x is
+  // clearly nearer the line.
+  const auto nearer_crease = [&](Index x, Index y, Index u, Index w, double y_off) {
+    const double x_off = off_chord(x, u, w);
+    Eigen::Vector3d n_x, n_y;
+    double c_x = 0, c_y = 0;
+    if(side_plane(x, y, n_x, c_x) && side_plane(y, x, n_y, c_y) && n_x.dot(n_y) < apart)
+      return x_off < y_off &&
+             std::abs(n_y.dot(X.row(x).transpose()) - c_y) < std::abs(n_x.dot(X.row(y).transpose()) - c_x);
+    return Feature_detection::jog_ratio * x_off < y_off;
+  };
   // the vertices a swap took off a curve, which no swap puts back (so that the swaps end)
   std::vector<bool> taken_off(n, false);
   // Tries the moves on the chain from u through u's crease neighbour `first`; true if one was made.
@@ -248,9 +299,9 @@ inline void straighten_creases(const Hinge_mesh& mesh, const Points& X, std::vec
             remove(inner, w);
             return true;
           }
-          // the vertex the jog goes round, clearly nearer the line
+          // the vertex the jog goes round, nearer the crease
           if(degree[*x] == 0 && !taken_off[*x] && adjacent(*x, w) && adjacent(*x, inner) &&
-             Feature_detection::jog_ratio * off_chord(*x, u, w) < inner_off)
+             nearer_crease(*x, inner, u, w, inner_off))
           {
             remove(u, inner);
             remove(inner, w);
@@ -332,7 +383,7 @@ inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh&
       edges.push_back(h.v);
   }
   drop_short_curves(edges, Feature_detection::shortest_spur);
-  straighten_creases(mesh, X, edges);
+  straighten_creases(mesh, X, [&filter](Index f) { return filter.normal(f); }, degrees, edges);
   drop_short_curves(edges, Feature_detection::shortest_spur);
   return edges;
 }
