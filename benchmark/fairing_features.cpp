@@ -297,7 +297,7 @@ int main(int argc, char* argv[])
     if(!CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/" + name + ".off", noisy))
       continue;
     const double eps = 0.25 * mean_edge_length(noisy);
-    add_noise(noisy, eps, 1);
+    add_noise(noisy, eps, seed);
     Mesh plain = noisy, featured = noisy;
     const auto base = PMP::constrained_fairing(plain, eps);
     const auto ours = PMP::constrained_fairing(featured, eps, CFP::feature_angle(angle));
