@@ -123,7 +123,7 @@ struct Row
 {
   Quality q;
   double near_error = 0, seconds = 0, found = 0, false_share = 0;
-  std::size_t marked = 0;
+  std::size_t marked = 0, iterations = 0, evaluations = 0;
 };
 
 enum Method { DEFAULT, ACCURATE, FEATURES, GIVEN, METHODS };
@@ -182,6 +182,8 @@ Row run(Method method, const Mesh& noisy, const Clean_surface& clean, Edge_flags
   }
   row.near_error = normal_error_near(result, clean, near);
   row.marked = r.number_of_feature_edges;
+  row.iterations = r.number_of_iterations;
+  row.evaluations = r.number_of_energy_evaluations;
   if(method == FEATURES)
   {
     std::size_t sharp = 0, found = 0, wrong = 0;
@@ -203,7 +205,8 @@ void print(const std::string& label, const Row& row)
             << " RMS " << std::setw(9) << row.q.surface_rms << "  normal " << std::setw(6) << row.q.normal_error_deg
             << " deg  near edges " << std::setw(6) << row.near_error << " deg  min angle " << std::setw(5)
             << row.q.min_angle_deg << "  folds " << row.q.folds << "  bound " << (row.q.ball_holds ? "exact" : "BROKEN")
-            << "  " << std::setprecision(3) << row.seconds << " s";
+            << "  " << std::setprecision(3) << row.seconds << " s (" << row.iterations << " iterations, "
+            << row.evaluations << " evaluations)";
   if(row.marked > 0)
     std::cout << "  edges " << row.marked;
   if(row.found > 0)
