@@ -20,10 +20,11 @@
 // not sharp. Methods: the default call, the accurate objective, the call with
 // `feature_angle(DEG)`, and the call given the clean sharp edges (`edge_is_constrained_map`:
 // what a perfect detection would give).
-// --parts runs only the parts named; --seed draws other noise (default 1); --write writes each case's meshes into DIR, as OFF files
-// with the clean mesh's connectivity (NAME_clean.off, NAME_D_noisy.off, NAME_D_default.off,
-// NAME_D_features.off) and the edges feature_angle found (NAME_D_creases.txt, a pair of vertex
-// indices per line), from which doc/make_figures.py draws the manual's figure.
+// --parts runs only the parts named; --seed draws other noise (default 1); --write writes each
+// case's meshes into DIR, as OFF files with the clean mesh's connectivity (NAME_clean.off,
+// NAME_D_noisy.off, NAME_D_default.off, NAME_D_features.off) and the edges feature_angle found
+// (NAME_D_creases.txt, a pair of vertex indices per line), from which doc/make_figures.py draws the
+// manual's figure.
 // Organic meshes (the bundled bunny and elephant, 0.25 h of noise): the share of edges the
 // detection marks, and the bending energy over all hinges against the default call's.
 

@@ -90,13 +90,13 @@ bilateral filter, which averages the noise on each side of a crease and leaves t
 apart: an edge is a crease where they are more than the angle apart and more than 1.5 times the
 smaller angle across each face's other edges; curves that end freely after fewer than 8 edges,
 and closed curves and clusters of fewer, are dropped, and curves that detour by a triangle or
-around a vertex off their line are straightened (a detour round a vertex is judged across the
-crease too, by the planes of its two sides). On six noisy CAD parts of CGAL's demo data
-(`benchmark/fairing_features`, noise and `epsilon` 0.25 times the mean edge length)
-`feature_angle(30)` finds 92 to 100 % of their edges sharper than 30 degrees, at most 0.3 % of
-what it finds is not sharp, and its mean normal error is 0.08 to 0.42 times the default call's;
-on a thin turbine blade it finds 29 %, and at twice the noise 1.6 to 16 % of what it marks is
-not sharp (see the user manual).
+around a vertex off their line are straightened, judged at smoothed points (a detour round a
+vertex is judged across the crease too, by the planes of its two sides). On six noisy CAD parts
+of CGAL's demo data (`benchmark/fairing_features`, noise and `epsilon` 0.25 times the mean edge
+length) `feature_angle(30)` finds 92 to 100 % of their edges sharper than 30 degrees, at most
+0.3 % of what it finds is not sharp, and its mean normal error is 0.08 to 0.42 times the
+default call's; on a thin turbine blade it finds 28 %, and at twice the noise 1.6 to 13 % of
+what it marks is not sharp (see the user manual).
 
 <b>Tolerances.</b> `epsilon` is the tolerance of every vertex and caps all the others:
 - `vertex_tolerance_map` gives each vertex its own tolerance `t(v)`, and the vertex then stays

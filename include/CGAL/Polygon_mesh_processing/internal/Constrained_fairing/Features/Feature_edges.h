@@ -6,20 +6,23 @@
 //
 // Detection, where the user gives an angle: a hinge is a crease when the bilaterally filtered
 // normals of its two faces (Normal_filter.h) are more than the angle apart, and more than
-// `jump_ratio` times the smaller angle across each face's other hinges; then the curves that
-// end freely after fewer than `shortest_spur` edges (spurs off a crease, isolated edges) and the
-// closed curves of fewer edges are dropped, until none is left. Why filtered normals: the
-// dihedral angles of a noisy mesh scatter by tens of degrees (0.25 times the edge length of
-// noise turns a face by about 20 degrees), so a dihedral test on the input marks noise and
-// misses creases alike; the filter averages the normals on each side of a crease and leaves the
-// two sides apart. Why a jump: a crease turns the surface across one edge, while a smooth bend
-// of a coarse mesh, or what noise the filter left, turns it alike across the faces' other edges
-// (measured in doc/design_notes.md, "Creases").
+// `jump_ratio` times the smaller angle across each face's other hinges; then the curves that end
+// freely after fewer than `shortest_spur` edges (spurs off a crease, isolated edges) and the closed
+// curves of fewer edges are dropped, until none is left; the curves' detours off their line are
+// straightened (`straighten_creases`), judged at points smoothed by Taubin steps, since the noise
+// moves a vertex by more than the distances that tell which of two vertices the crease passes. Why
+// filtered normals: the dihedral angles of a noisy mesh scatter by tens of degrees (0.25 times the
+// edge length of noise turns a face by about 20 degrees), so a dihedral test on the input marks
+// noise and misses creases alike; the filter averages the normals on each side of a crease and
+// leaves the two sides apart. Why a jump: a crease turns the surface across one edge, while a
+// smooth bend of a coarse mesh, or what noise the filter left, turns it alike across the faces'
+// other edges (measured in doc/design_notes.md, "Creases").
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Normal_filter.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
@@ -47,6 +50,15 @@ struct Feature_detection
   // a jog round a vertex is swapped to it where the vertex is this many times nearer the line
   // (where the crease's sides are not apart: below)
   static constexpr double jog_ratio = 1.5;
+  // Taubin steps (Smoothed_start.h) before the jogs are judged, as many as the accurate
+  // objective's anchor takes (Fidelity_anchor.h)
+  static constexpr std::size_t jog_smoothing_steps = 10;
+};
+
+// A bound that holds every point: Taubin steps in free space.
+struct No_bound
+{
+  void project(Points&) const {}
 };
 
 // An edge as its two vertices, the smaller first.
@@ -256,11 +268,12 @@ void straighten_creases(const Hinge_mesh& mesh, const Points& X, const Face_norm
   // clearly nearer the line.
   const auto nearer_crease = [&](Index x, Index y, Index u, Index w, double y_off) {
     const double x_off = off_chord(x, u, w);
+    if(!(x_off < y_off))
+      return false;
     Eigen::Vector3d n_x, n_y;
     double c_x = 0, c_y = 0;
     if(side_plane(x, y, n_x, c_x) && side_plane(y, x, n_y, c_y) && n_x.dot(n_y) < apart)
-      return x_off < y_off &&
-             std::abs(n_y.dot(X.row(x).transpose()) - c_y) < std::abs(n_x.dot(X.row(y).transpose()) - c_x);
+      return std::abs(n_y.dot(X.row(x).transpose()) - c_y) < std::abs(n_x.dot(X.row(y).transpose()) - c_x);
     return Feature_detection::jog_ratio * x_off < y_off;
   };
   // the vertices a swap took off a curve, which no swap puts back (so that the swaps end)
@@ -383,7 +396,10 @@ inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh&
       edges.push_back(h.v);
   }
   drop_short_curves(edges, Feature_detection::shortest_spur);
-  straighten_creases(mesh, X, [&filter](Index f) { return filter.normal(f); }, degrees, edges);
+  // The detours are judged at smoothed points (top of this file).
+  Points smoothed = X;
+  smooth_start(mesh, No_bound(), Feature_detection::jog_smoothing_steps, smoothed);
+  straighten_creases(mesh, smoothed, [&filter](Index f) { return filter.normal(f); }, degrees, edges);
   drop_short_curves(edges, Feature_detection::shortest_spur);
   return edges;
 }
