@@ -113,12 +113,14 @@ void check_gradients()
   test::add_noise(rough, 0.25, 4);
   check_gradient(rough, 0, "strongly perturbed icosphere");
 
+  const std::size_t count = test::under_sanitizers ? 300 : 3000; // each a full evaluation, twice
   for(const std::string name : {"elephant.off", "head.off"})
   {
     Mesh real;
     CHECK(CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/" + name, real));
     if(!is_empty(real))
-      check_gradient(real, 3000, name + (is_closed(real) ? " (closed" : " (border") + ", 3000 coordinates)");
+      check_gradient(real, count,
+                     name + (is_closed(real) ? " (closed, " : " (border, ") + std::to_string(count) + " coordinates)");
   }
 }
 
@@ -149,7 +151,8 @@ void check_tiled_evaluation()
   const CF::Hinge_mesh reversed_hinges(bunny, reversed_index);
   CHECK(std::abs(CF::Bending_energy(reversed_hinges, reversed).value(reversed) - E) <= 1e-12 * E);
 
-  check_gradient(bunny, 600, "noisy bunny, many tiles (600 coordinates)");
+  const std::size_t count = test::under_sanitizers ? 60 : 600;
+  check_gradient(bunny, count, "noisy bunny, many tiles (" + std::to_string(count) + " coordinates)");
 }
 
 // Coordinates far outside the range where squared areas fit in double.

@@ -6,7 +6,8 @@
 // the energy is finite, never rises and falls as on any noisy mesh, no new degenerate triangle
 // appears, and two runs give bit-identical results. And loose triangles whose coordinates span
 // 1e-41 to 1e37 (an input the fuzzer found): the energy never rises, whatever the number of
-// iterations allowed.
+// iterations allowed. Under sanitizers, the real meshes each with one kind of bound (the
+// elephant in balls, the head in boxes), the icosphere with both.
 
 #include "test_support.h"
 
@@ -104,8 +105,10 @@ int main()
   for(Deviation_bound shape : {Deviation_bound::BALL, Deviation_bound::BOX})
   {
     check_fairing(sphere, "icosphere", shape);
-    check_fairing(elephant, "elephant.off", shape);
-    check_fairing(head, "head.off (border)", shape);
+    if(!test::under_sanitizers || shape == Deviation_bound::BALL)
+      check_fairing(elephant, "elephant.off", shape);
+    if(!test::under_sanitizers || shape == Deviation_bound::BOX)
+      check_fairing(head, "head.off (border)", shape);
   }
   check_extreme_coordinates();
   return test::report("test_degenerate_geometry");

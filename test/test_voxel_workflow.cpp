@@ -28,6 +28,7 @@
 //    reference.
 // Cases: a sphere of radius 10 voxels, and the bundled elephant (inside test by
 // CGAL::Side_of_triangle_mesh), 64 voxels along its longest side, and, for the distance alone, 96 on thick slices.
+// Under sanitizers, the spheres alone: the elephant's grids took 90 % of the test's time there.
 
 #include "test_support.h"
 
@@ -287,6 +288,11 @@ int main()
 {
   run(sphere({1, 1, 1}), true, 8);
   run(sphere({1, 1, 3}), false, 3);
+  if(test::under_sanitizers)
+  {
+    std::cout << "elephant: not under sanitizers, the spheres reach the same code" << std::endl;
+    return test::report("test_voxel_workflow");
+  }
 
   Mesh shape;
   CHECK(CGAL::IO::read_polygon_mesh(std::string(CONSTRAINED_FAIRING_DATA_DIR) + "/elephant.off", shape));
