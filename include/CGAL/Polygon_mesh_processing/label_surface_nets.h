@@ -307,8 +307,10 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   }
 
   // Points of split cells can line up (a staircase of cells split alike): the middle point of a
-  // triangle on a line moves off it by a quarter of its box along the axis the line runs least
-  // along, its box shrunk to stay within the one it had.
+  // triangle on a line moves off it by half its box along the axis the line runs least along, its
+  // box shrunk to the half it moved into. The fairing straightens such junction lines again, and
+  // the repair after it pulls the triangle back to this start: moved by a quarter of its box, a
+  // triangle of Debian's inia19 atlas stayed a 4.85-degree needle.
   for(int round = 0; round < 4; ++round)
   {
     bool moved = false;
@@ -332,7 +334,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
         if(std::abs(line[int(a)]) < std::abs(line[int(axis)]))
           axis = a;
       const std::size_t v = std::size_t(triangles[t][std::size_t(middle)]);
-      const double shift = box_half_extents[first_box + v - first][axis] / 4;
+      const double shift = box_half_extents[first_box + v - first][axis] / 2;
       double x[3] = {p[std::size_t(middle)].x(), p[std::size_t(middle)].y(), p[std::size_t(middle)].z()};
       x[axis] += shift;
       points[v] = Point(x[0], x[1], x[2]);
