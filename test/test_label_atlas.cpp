@@ -77,7 +77,8 @@ double smallest_angle(const std::vector<Point>& points, const std::vector<std::a
     {
       const auto u = points[t[std::size_t(k + 1) % 3]] - points[t[std::size_t(k)]],
                  v = points[t[std::size_t(k + 2) % 3]] - points[t[std::size_t(k)]];
-      smallest = (std::min)(smallest, std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v) * 180 / CGAL_PI);
+      const double angle = std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
+      smallest = (std::min)(smallest, angle * 180 / CGAL_PI);
     }
   return smallest;
 }
@@ -167,10 +168,16 @@ int main()
   // inia19's block of 8^3 voxels at (49, 99, 34): three points of split cells on a junction line,
   // whose middle one the nets move off it. The fairing straightens the line again and the repair
   // pulls that triangle back to its start: 4.85 degrees when moved by a quarter of its box.
+  const std::string inia19_file = templates + "inia19-NeuroMaps.nii.gz";
   Constrained_fairing_front_end::Label_map inia19;
-  if(Constrained_fairing_front_end::read_label_map(templates + "inia19-NeuroMaps.nii.gz", inia19).empty())
-    CHECK(check_block(block_of(inia19, {49, 99, 34}, 8), 8, "inia19, 8^3").second >= 5);
-  else
+  if(!std::filesystem::exists(inia19_file))
     std::cout << "  inia19: not in this mricron-data" << std::endl;
+  else
+  {
+    const std::string inia19_error = Constrained_fairing_front_end::read_label_map(inia19_file, inia19);
+    CHECK(inia19_error.empty());
+    if(inia19_error.empty())
+      CHECK(check_block(block_of(inia19, {49, 99, 34}, 8), 8, "inia19, 8^3").second >= 5);
+  }
   return test::report("test_label_atlas");
 }
