@@ -134,15 +134,7 @@ void check_fairing(const std::array<double, 3>& spacing)
   CHECK(faired[2] * 1.5 < raw[2]);
 
   // No needle under 5 degrees (the barrier pushes back those under 6).
-  double smallest = 180;
-  for(const Triangle& t : soup.triangles)
-    for(int k = 0; k < 3; ++k)
-    {
-      const Point &a = points[t[std::size_t(k)]], &b = points[t[std::size_t((k + 1) % 3)]],
-                  &c = points[t[std::size_t((k + 2) % 3)]];
-      const double cosine = (b - a) * (c - a) / std::sqrt((b - a).squared_length() * (c - a).squared_length());
-      smallest = (std::min)(smallest, std::acos((std::max)(-1., (std::min)(1., cosine))) * 180 / CGAL_PI);
-    }
+  const double smallest = test::smallest_angle(points, soup.triangles);
   std::cout << "  smallest angle " << smallest << " degrees" << std::endl;
   CHECK(smallest >= 5);
 

@@ -69,20 +69,6 @@ std::size_t check_surfaces(const std::vector<Point>& points, const std::vector<s
   return labels.size();
 }
 
-double smallest_angle(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 3> >& triangles)
-{
-  double smallest = 180;
-  for(const auto& t : triangles)
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto u = points[t[std::size_t(k + 1) % 3]] - points[t[std::size_t(k)]],
-                 v = points[t[std::size_t(k + 2) % 3]] - points[t[std::size_t(k)]];
-      const double angle = std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
-      smallest = (std::min)(smallest, angle * 180 / CGAL_PI);
-    }
-  return smallest;
-}
-
 // The n^3 voxels of `map` from `first`.
 std::vector<std::int64_t> block_of(const Constrained_fairing_front_end::Label_map& map, const std::array<std::size_t, 3>& first,
                                    std::size_t n)
@@ -125,7 +111,7 @@ std::pair<std::size_t, double> check_block(const std::vector<std::int64_t>& bloc
   std::sort(sorted.begin(), sorted.end());
   CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
   check_surfaces(faired, triangles, face_labels);
-  const double smallest = smallest_angle(faired, triangles);
+  const double smallest = test::smallest_angle(faired, triangles);
   std::cout << "  " << name << ": " << labels << " labels, " << points.size() << " points, " << triangles.size()
             << " triangles, " << r.number_of_iterations << " iterations, smallest angle " << smallest << " degrees"
             << std::endl;

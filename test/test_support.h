@@ -297,6 +297,20 @@ double bound_violation(const std::vector<Point>& out, const std::vector<Point>& 
   return violation;
 }
 
+// The smallest angle (degrees) of the triangles of a soup.
+inline double smallest_angle(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  double smallest = 180;
+  for(const auto& t : triangles)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const Vector u = points[t[(k + 1) % 3]] - points[t[k]], v = points[t[(k + 2) % 3]] - points[t[k]];
+      const double angle = std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
+      smallest = (std::min)(smallest, angle * 180 / CGAL_PI);
+    }
+  return smallest;
+}
+
 // The bending energy summed hinge by hinge from its formula (Bending_energy.h), with no
 // regularization and no hinge left out: the mesh's, for a mesh without degenerate triangles.
 inline double plain_bending_energy(const Mesh& m)
