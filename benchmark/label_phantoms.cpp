@@ -116,11 +116,10 @@ struct Phantom
       const Distance& region = regions[std::size_t((a == 0 ? b : a) - 1)];
       const Point &p = P[soup.triangles[f][0]], &q = P[soup.triangles[f][1]], &r = P[soup.triangles[f][2]];
       const double A = std::sqrt(CGAL::cross_product(q - p, r - p).squared_length()) / 2;
-      for(int k = 0; k < 3; ++k)
+      for(const Point& x : {CGAL::barycenter(p, 4, q, 1, r, 1), CGAL::barycenter(p, 1, q, 4, r, 1),
+                            CGAL::barycenter(p, 1, q, 1, r, 4)})
       {
-        const double w[3] = {k == 0 ? 2. / 3 : 1. / 6, k == 1 ? 2. / 3 : 1. / 6, k == 2 ? 2. / 3 : 1. / 6};
-        const double d = region({w[0] * p.x() + w[1] * q.x() + w[2] * r.x(), w[0] * p.y() + w[1] * q.y() + w[2] * r.y(),
-                                 w[0] * p.z() + w[1] * q.z() + w[2] * r.z()});
+        const double d = region({x.x(), x.y(), x.z()});
         sum += A / 3 * d * d;
       }
       area += A;
