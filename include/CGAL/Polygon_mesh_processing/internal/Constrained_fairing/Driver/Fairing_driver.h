@@ -19,7 +19,7 @@
 //  - order(part, rank): its own numbering moved to the solver's order;
 //  - hinges(part, moving, X0, settings) and number_of_feature_edges() (the creases it keeps),
 //    sliding_points(part) (those with no surface normal),
-//    sliver_threshold(settings), add_terms(objective, X0, settings);
+//    sliver_threshold(settings), add_terms(objective, mesh, X0, settings);
 //  - repair(bound, moving, X0, X, objective, settings, result) after the descent;
 //  - clear_outputs(maps) before the part's values are written, and write(key, x, y, z).
 
@@ -119,7 +119,7 @@ Constrained_fairing_result run_fairing_driver(Input& input, double epsilon, cons
     const Hinge_mesh mesh = input.hinges(part, moving, X0, settings);
     result.number_of_feature_edges = input.number_of_feature_edges();
     Fairing_objective energy(mesh, X0, settings.sliver_barrier_weight, input.sliver_threshold(settings));
-    input.add_terms(energy, X0, settings);
+    input.add_terms(energy, mesh, X0, settings);
     Points anchor;
     if(settings.is_accurate())
     {

@@ -143,10 +143,15 @@ public:
     return Sliver_barrier::threshold_of_angle(settings.interface_sliver_angle);
   }
 
-  void add_terms(Fairing_objective& objective, const Points& X0, const Fairing_settings& settings)
+  // The volumes' triangles in the mesh's order, in which the objective evaluates them.
+  void add_terms(Fairing_objective& objective, const Hinge_mesh& mesh, const Points& X0, const Fairing_settings& settings)
   {
     m_curves.emplace(m_junctions->inner, X0, settings.curve_weight);
-    m_volumes.emplace(m_oriented, dense_label_sides(), X0, settings.label_volume_weight);
+    const std::vector<std::array<Index, 2> > sides = dense_label_sides();
+    std::vector<std::array<Index, 2> > mesh_sides(sides.size());
+    for(std::size_t f = 0; f < sides.size(); ++f)
+      mesh_sides[mesh.positions_of_list[f]] = sides[f];
+    m_volumes.emplace(mesh.triangles, mesh_sides, X0, settings.label_volume_weight);
     objective.add_curve_bending(*m_curves);
     objective.add_label_volumes(*m_volumes);
   }

@@ -154,7 +154,7 @@ public:
 
   double sliver_threshold(const Fairing_settings& settings) const { return settings.sliver_threshold; }
 
-  void add_terms(Fairing_objective& objective, const Points& X0, const Fairing_settings& settings)
+  void add_terms(Fairing_objective& objective, const Hinge_mesh&, const Points& X0, const Fairing_settings& settings)
   {
     if(m_creases.inner.empty())
       return;

@@ -50,6 +50,8 @@ struct Hinge_mesh
   // faired as curves; empty on a multi-label surface, whose junction lines the interfaces'
   // hinges do not cross anyway.
   Curve_network creases;
+  // Built from a triangle list: the position in `triangles` of each triangle of the list.
+  std::vector<Index> positions_of_list;
 
   // The largest mesh the 32-bit indices hold (Bending_energy numbers face corners 3 f + k).
   static constexpr std::size_t max_faces = 0x55555555;
@@ -72,7 +74,8 @@ struct Hinge_mesh
     }
     sort_by_vertex(sorted, number_of_vertices, [](const auto& t) { return t.first[0]; },
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<Index> position(sorted.size());
+    std::vector<Index>& position = positions_of_list;
+    position.resize(sorted.size());
     triangles.reserve(sorted.size());
     for(const auto& t : sorted)
     {

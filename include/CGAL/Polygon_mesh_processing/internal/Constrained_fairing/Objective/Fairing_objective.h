@@ -32,6 +32,9 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
+#include <CGAL/assertions.h>
+
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -73,8 +76,13 @@ public:
   // Adds the bending of the creases or junction lines (kept by reference).
   void add_curve_bending(const Curve_bending& curves) { m_curves = &curves; }
 
-  // Adds the volumes of the labels of a multi-label surface (kept by reference).
-  void add_label_volumes(Label_volumes& volumes) { m_volumes = &volumes; }
+  // Adds the volumes of the labels of a multi-label surface (kept by reference), whose triangles
+  // are the mesh's, in its order.
+  void add_label_volumes(Label_volumes& volumes)
+  {
+    CGAL_precondition(volumes.number_of_triangles() == m_mesh.triangles.size());
+    m_volumes = &volumes;
+  }
 
   std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
 
@@ -82,7 +90,7 @@ public:
 
   double value(const Points& X)
   {
-    double sum = m_bending.value(X) + m_barrier.value(X);
+    double sum = m_bending.value(X, Triangle_terms{m_barrier, nullptr});
     if(m_curves)
       sum += m_curves->value(X);
     if(m_volumes)
@@ -94,12 +102,10 @@ public:
   // gradient and 2 w_i to the stiffness, in every direction.
   double value_and_gradient(const Points& X, Points& G, Stiffness_and_reach* scales = nullptr)
   {
-    double sum = m_bending.value_and_gradient(X, G, scales);
-    sum += m_barrier.add_gradient(X, G, scales);
+    double sum = m_volumes ? m_volumes->update_pulls(X) : 0;
+    sum += m_bending.value_and_gradient(X, G, scales, Triangle_terms{m_barrier, m_volumes});
     if(m_curves)
       sum += m_curves->add_gradient(X, G, scales);
-    if(m_volumes)
-      sum += m_volumes->add_gradient(X, G, scales);
     if(m_weight.empty())
       return sum;
     parallel_for_blocks(m_weight.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -115,6 +121,25 @@ public:
   }
 
 private:
+  // The terms evaluated in the bending energy's tiles (Bending_energy.h): the barrier's, and the
+  // volumes' gradient at the pulls of their last update.
+  struct Triangle_terms
+  {
+    static constexpr bool active = true;
+    const Sliver_barrier& barrier;
+    const Label_volumes* volumes;
+
+    double value(Index f, const std::array<Eigen::Vector3d, 3>& p) const { return barrier.value(f, p); }
+
+    double add_gradient(Index f, const std::array<Index, 3>& v, const std::array<Eigen::Vector3d, 3>& p,
+                        unsigned corners, Points& G, Stiffness_and_reach* scales) const
+    {
+      if(volumes)
+        volumes->add_gradient(f, v, p, corners, G);
+      return barrier.add_gradient(f, v, p, corners, G, scales);
+    }
+  };
+
   double fidelity(const Points& X)
   {
     if(m_weight.empty())

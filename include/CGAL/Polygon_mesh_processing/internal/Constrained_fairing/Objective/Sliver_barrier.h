@@ -23,9 +23,9 @@
 // test and its gradient take squares of squared lengths, which in double underflow for coordinates
 // under about 1e-76 and overflow over 1e76, where the barrier was otherwise wrong or zero.
 //
-// Evaluation: each block of triangles lists its slivers in parallel, then their terms are
-// summed and their gradients added in triangle order, so that results do not depend on the
-// number of threads.
+// Evaluation: a triangle's term and gradient depend on its three points only, so the objective
+// evaluates them in the bending energy's tiles (Triangle_terms, Bending_energy.h), where those
+// points are at hand; value() and add_gradient() evaluate the barrier on its own.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SLIVER_BARRIER_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_SLIVER_BARRIER_H
@@ -34,10 +34,10 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <CGAL/number_type_config.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -62,80 +62,103 @@ public:
       m_degenerate = degenerate_triangles(mesh, m_unit_scaled(X0));
   }
 
-  double value(const Points& X) { return evaluate(X, nullptr, nullptr); }
-
-  // Returns B, adds its gradient to G and its Gauss-Newton diagonal to the stiffness.
-  double add_gradient(const Points& X, Points& G, Stiffness_and_reach* scales) { return evaluate(X, &G, scales); }
-
-private:
-  // The test needs no square root: q < q0 is 12 |N|^2 < q0^2 S^2, N the doubled area vector and
-  // S the sum of the squared edges.
-  double evaluate(const Points& unscaled, Points* G, Stiffness_and_reach* scales)
+  double value(const Points& X)
   {
-    if(m_weight == 0)
-      return 0;
-    const Points& X = m_unit_scaled(unscaled);
-    const std::size_t nt = m_mesh.triangles.size();
-    m_slivers.resize(number_of_blocks(nt));
-    parallel_for_blocks(nt, [&](std::size_t begin, std::size_t end, std::size_t block) {
-      std::vector<Index>& slivers = m_slivers[block];
-      slivers.clear();
-      for(std::size_t f = begin; f < end; ++f)
-      {
-        const auto& t = m_mesh.triangles[f];
-        const Eigen::Vector3d a = point(X, t[1]) - point(X, t[0]), b = point(X, t[2]) - point(X, t[0]);
-        const double S = a.squaredNorm() + b.squaredNorm() + (b - a).squaredNorm();
-        if(12 * a.cross(b).squaredNorm() < m_threshold * m_threshold * S * S && !m_degenerate[f])
-          slivers.push_back(static_cast<Index>(f));
-      }
-    });
+    const Points& P = m_unit_scaled(X);
     double sum = 0;
-    for(const std::vector<Index>& slivers : m_slivers)
-      for(Index f : slivers)
-      {
-        const double q = quality(X, f), shifted = q + m_threshold / 100, r = m_threshold / shifted;
-        sum += m_weight * (r - 1) * (r - 1);
-        if(G)
-          add_triangle_gradient(X, f, 2 * m_weight * (r - 1), -r / shifted, *G, scales);
-      }
+    for(std::size_t f = 0; f < m_mesh.triangles.size(); ++f)
+      sum += value(Index(f), corners(P, f));
     return sum;
   }
 
-  // S, the sum of triangle f's squared edges.
-  double squared_edges(const Points& X, std::size_t f) const
+  // Returns B, adds its gradient to G and its Gauss-Newton diagonal to the stiffness.
+  double add_gradient(const Points& X, Points& G, Stiffness_and_reach* scales)
   {
-    const auto& t = m_mesh.triangles[f];
-    return (point(X, t[1]) - point(X, t[0])).squaredNorm() + (point(X, t[2]) - point(X, t[1])).squaredNorm() +
-           (point(X, t[0]) - point(X, t[2])).squaredNorm();
+    const Points& P = m_unit_scaled(X);
+    Points G_scaled = Points::Zero(X.rows(), 3);
+    Stiffness_and_reach scales_scaled;
+    if(scales)
+      scales_scaled.stiffness = Eigen::VectorXd::Zero(X.rows());
+    double sum = 0;
+    for(std::size_t f = 0; f < m_mesh.triangles.size(); ++f)
+      sum += add_gradient(Index(f), m_mesh.triangles[f], corners(P, f), 7, G_scaled, scales ? &scales_scaled : nullptr);
+    const double s = m_unit_scaled.scale(); // back from the scaled points
+    G += s * G_scaled;
+    if(scales)
+      scales->stiffness += (s * s) * scales_scaled.stiffness;
+    return sum;
   }
 
-  double quality(const Points& X, std::size_t f) const
+  // Triangle f's term, at its points p brought to unit scale (Triangle_terms, Bending_energy.h).
+  // The test needs no square root: q < q0 is 12 |N|^2 < q0^2 S^2, N the doubled area vector and
+  // S the sum of the squared edges.
+  double value(Index f, const std::array<Eigen::Vector3d, 3>& p) const
   {
-    return 2 * std::sqrt(3.) * area_normal(m_mesh, X, f).norm() / squared_edges(X, f);
+    double q;
+    return is_sliver(f, p, q) ? term(q) : 0;
   }
 
-  // With B_f = w (r - 1)^2 and r = q0 / (q + q0 / 100): dB_f = outer * dr, dr = inner * dq,
-  // q = 4 sqrt(3) A / S, dA at vertex k = n x (p_(k+2) - p_(k+1)) / 2, dS = 2 (2 p_k - the others).
-  // At the scaled points s X, back to X: s times the gradient, s^2 times the stiffness.
-  void add_triangle_gradient(const Points& X, std::size_t f, double outer, double inner, Points& G,
-                             Stiffness_and_reach* scales) const
+  // The same, adding its gradient with respect to p, and its Gauss-Newton diagonal, at the
+  // corners k of bit k in `corners`: with B_f = w (r - 1)^2 and r = q0 / (q + q0 / 100),
+  // dB_f = outer * dr, dr = inner * dq, q = 4 sqrt(3) A / S, dA at vertex k = n x (p_(k+2) -
+  // p_(k+1)) / 2, dS = 2 (2 p_k - the others).
+  double add_gradient(Index f, const std::array<Index, 3>& v, const std::array<Eigen::Vector3d, 3>& p,
+                      unsigned corners, Points& G, Stiffness_and_reach* scales) const
   {
-    const auto& t = m_mesh.triangles[f];
-    const Eigen::Vector3d p[3] = {point(X, t[0]), point(X, t[1]), point(X, t[2])};
-    const Eigen::Vector3d N = area_normal(m_mesh, X, f);
+    double q;
+    if(!is_sliver(f, p, q))
+      return 0;
+    const double shifted = q + m_threshold / 100, r = m_threshold / shifted;
+    const double outer = 2 * m_weight * (r - 1), inner = -r / shifted;
+    const Eigen::Vector3d N = (p[1] - p[0]).cross(p[2] - p[0]);
     const double length = N.norm();
     const Eigen::Vector3d n = length > 0 ? Eigen::Vector3d(N / length) : Eigen::Vector3d::Zero();
-    const double A = length / 2, S = squared_edges(X, f), s = m_unit_scaled.scale();
-    for(int k = 0; k < 3; ++k)
+    const double A = length / 2, S = squared_edges(p);
+    for(std::size_t k = 0; k < 3; ++k)
     {
+      if(!(corners & (1u << k)))
+        continue;
       const Eigen::Vector3d& a = p[(k + 1) % 3];
       const Eigen::Vector3d& b = p[(k + 2) % 3];
       const Eigen::Vector3d dA = 0.5 * n.cross(b - a), dS = 2 * (2 * p[k] - a - b);
       const Eigen::Vector3d dq = 4 * std::sqrt(3.) * (S * dA - A * dS) / (S * S);
-      point(G, t[k]) += s * outer * inner * dq;
+      point(G, v[k]) += outer * inner * dq;
       if(scales)
-        scales->stiffness[static_cast<Eigen::Index>(t[k])] += s * s * 2 * m_weight * inner * inner * dq.squaredNorm();
+        scales->stiffness[static_cast<Eigen::Index>(v[k])] += 2 * m_weight * inner * inner * dq.squaredNorm();
     }
+    return term(q);
+  }
+
+private:
+  std::array<Eigen::Vector3d, 3> corners(const Points& P, std::size_t f) const
+  {
+    const auto& t = m_mesh.triangles[f];
+    return {point(P, t[0]), point(P, t[1]), point(P, t[2])};
+  }
+
+  static double squared_edges(const std::array<Eigen::Vector3d, 3>& p)
+  {
+    return (p[1] - p[0]).squaredNorm() + (p[2] - p[1]).squaredNorm() + (p[0] - p[2]).squaredNorm();
+  }
+
+  // Whether triangle f is a sliver left in the barrier, and then its quality q.
+  bool is_sliver(Index f, const std::array<Eigen::Vector3d, 3>& p, double& q) const
+  {
+    if(m_weight == 0)
+      return false;
+    const Eigen::Vector3d a = p[1] - p[0], b = p[2] - p[0];
+    const double S = a.squaredNorm() + b.squaredNorm() + (b - a).squaredNorm();
+    const double N2 = a.cross(b).squaredNorm();
+    if(!(12 * N2 < m_threshold * m_threshold * S * S) || m_degenerate[f])
+      return false;
+    q = 2 * std::sqrt(3.) * std::sqrt(N2) / squared_edges(p);
+    return true;
+  }
+
+  double term(double q) const
+  {
+    const double r = m_threshold / (q + m_threshold / 100);
+    return m_weight * (r - 1) * (r - 1);
   }
 
   const Hinge_mesh& m_mesh;
@@ -143,7 +166,6 @@ private:
   double m_threshold; // q0
   Unit_scaled_points m_unit_scaled;
   std::vector<bool> m_degenerate; // in the input, when the weight is not 0
-  std::vector<std::vector<Index> > m_slivers; // per block of triangles
 };
 
 } // namespace Constrained_fairing
