@@ -12,7 +12,9 @@
 //    (measured: 8.6 and 8.0, 3.7 and 3.0, 1.9 and 3.0 with cubic and 1 x 1 x 3 voxels);
 //  - each label's surface is still closed, valid and outward, and none intersects itself; a second
 //    call gives the same points, bit for bit; the deviation map agrees with the result;
-//  - the volume term (Label_volumes.h): its gradient against central finite differences, a label
+//  - the volume term (Label_volumes.h): its gradient against central finite differences, on
+//    its own and as the objective adds it in the bending energy's tiles, on the triangles in the
+//    mesh's order; a label
 //    whose surface is not closed is not held, the slack of a block of voxels is that of its six
 //    faces; on a torus whose tube is 5 voxels across the faired surface lies inside the raw nets
 //    on average (the bending energy alone kept it at or outside them);
@@ -29,6 +31,8 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
@@ -202,6 +206,30 @@ void check_label_volumes()
   const double error = test::gradient_error(X, G, [&](const CF::Points& Y) { return volumes.value(Y); }, 1e-5, 7);
   std::cout << "  label volumes: gradient vs finite differences, relative error " << error << std::endl;
   CHECK(error < 1e-6);
+
+  // The same term as the objective evaluates it, its gradient added in the bending energy's
+  // tiles, on the triangles in the mesh's order (which a Hinge_mesh sorts): no hinges and no
+  // barrier, so that the volumes alone are checked, against central differences.
+  const CF::Hinge_mesh mesh(std::size_t(X0.rows()), triangles, {});
+  std::vector<std::array<CF::Index, 2> > mesh_sides(sides.size());
+  bool reordered = false;
+  for(std::size_t f = 0; f < sides.size(); ++f)
+  {
+    mesh_sides[mesh.positions_of_list[f]] = sides[f];
+    reordered = reordered || mesh.positions_of_list[f] != f;
+  }
+  CHECK(reordered);
+  CF::Label_volumes in_mesh_order(mesh.triangles, mesh_sides, X0, CF::default_label_volume_weight);
+  CF::Fairing_objective objective(mesh, X0, 0, CF::default_sliver_threshold);
+  objective.add_label_volumes(in_mesh_order);
+  CF::Points G_objective;
+  const double objective_value = objective.value_and_gradient(X, G_objective);
+  CHECK(objective_value > 0 && objective_value == in_mesh_order.value(X));
+  const double objective_error =
+    test::gradient_error(X, G_objective, [&](const CF::Points& Y) { return objective.value(Y); }, 1e-5, 7);
+  std::cout << "  label volumes in the tiles: gradient vs finite differences, relative error " << objective_error
+            << std::endl;
+  CHECK(objective_error < 1e-6);
 
   std::vector<std::array<CF::Index, 3> > open_triangles;
   std::vector<std::array<CF::Index, 2> > open_sides;
