@@ -14,10 +14,10 @@
 //    call gives the same points, bit for bit; the deviation map agrees with the result;
 //  - the volume term (Label_volumes.h): its gradient against central finite differences, on
 //    its own and as the objective adds it in the bending energy's tiles, on the triangles in the
-//    mesh's order; a label
-//    whose surface is not closed is not held, the slack of a block of voxels is that of its six
-//    faces; on a torus whose tube is 5 voxels across the faired surface lies inside the raw nets
-//    on average (the bending energy alone kept it at or outside them);
+//    mesh's order; a label whose surface is not closed is not held, the slack of a block of
+//    voxels is that of its six faces; on a torus whose tube is 5 voxels across the faired
+//    surface lies inside the raw nets on average (the bending energy alone kept it at or outside
+//    them);
 //  - the crossing search of the repair (Crossing_repair.h) against every pair tested with CGAL's
 //    do_intersect, over all pairs and over the pairs with a few changed triangles, on triangles
 //    of sizes over three orders of magnitude; the sine of a triangle's smallest angle on known
