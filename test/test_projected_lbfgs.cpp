@@ -5,22 +5,25 @@
 // contains the plane, the minimum (energy 0) of the vertices free in their sets is known and must
 // be approached (test_normal_offsets has the same on segments), with every
 // iterate in the bound and the energy never rising; the result is bit-identical whatever the
-// number of threads; no step flips or collapses a triangle; the fused vector passes give the
-// same bits as the separate ones; and the stopping rule tells slow progress from convergence and
+// number of threads; no step flips or collapses a triangle; the inverse Hessian's three passes
+// give the two-loop recursion's product; and the stopping rule tells slow progress from convergence and
 // measures the surface's motion exactly.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Lbfgs_inverse_hessian.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -136,31 +139,94 @@ void check_no_step_flips_a_triangle()
             << " of itself in one step" << std::endl;
 }
 
-// add_scaled_then_dot() against add_scaled() then dot(), on vectors of several blocks and a
-// partial one, with values spread over orders of magnitude so that any change in the order of
-// the operations shows in the last bits.
-void check_fused_passes()
+// The inverse Hessian's three passes against the two-loop recursion (Nocedal & Wright, alg.
+// 7.4) taken literally on the same pairs, stored in single precision, with H0 = gamma K^-1:
+// after each of 1 to 9 pairs (one skipped, of negative curvature), on vectors of several blocks
+// and a partial one, with stiffnesses spread over orders of magnitude and some zero. Also the
+// secant condition H y = s of the newest pair, which BFGS holds whatever H0.
+void check_inverse_hessian()
 {
+  using Hessian = CF::Lbfgs_inverse_hessian;
   const Eigen::Index n = static_cast<Eigen::Index>(3 * CF::parallel_block_size + 123);
   std::mt19937 random(5);
-  std::uniform_real_distribution<double> uniform(-1, 1), exponent(-8, 8);
-  const auto value = [&] { return uniform(random) * std::pow(10., exponent(random)); };
-  CF::Points y(n, 3);
-  CF::Float_points x(n, 3), z(n, 3);
+  std::uniform_real_distribution<double> uniform(-1, 1), exponent(-3, 3);
+  Eigen::VectorXd stiffness(n), curvature(n), inverse_k(n);
   for(Eigen::Index i = 0; i < n; ++i)
-    for(Eigen::Index c = 0; c < 3; ++c)
+  {
+    stiffness[i] = i % 97 == 0 ? 0 : std::pow(10., exponent(random));
+    inverse_k[i] = stiffness[i] > 0 ? 1 / stiffness[i] : 0;
+    curvature[i] = std::pow(10., exponent(random));
+  }
+  const auto random_points = [&] {
+    CF::Points X(n, 3);
+    for(Eigen::Index i = 0; i < X.size(); ++i)
+      X.data()[i] = uniform(random);
+    return X;
+  };
+  Hessian H;
+  std::vector<std::pair<Eigen::MatrixXd, Eigen::MatrixXd> > kept; // oldest first
+  const auto three_passes = [&](const CF::Points& q) {
+    CF::Points D;
+    CHECK(H.start(D, stiffness, [&](CF::Points& Q, std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        CF::point(Q, i) = CF::point(q, i);
+    }));
+    CF::parallel_for_blocks(std::size_t(n), [&](std::size_t begin, std::size_t end, std::size_t) {
+      H.finish_rows(D, begin, end);
+    });
+    return D;
+  };
+  const auto dot = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return a.cwiseProduct(b).sum(); };
+  const auto two_loop = [&](const CF::Points& q) {
+    Eigen::MatrixXd d = q;
+    std::vector<double> alpha(kept.size());
+    for(std::size_t j = kept.size(); j-- > 0;)
     {
-      y(i, c) = value();
-      x(i, c) = static_cast<float>(value());
-      z(i, c) = static_cast<float>(value());
+      alpha[j] = dot(kept[j].first, d) / dot(kept[j].first, kept[j].second);
+      d -= alpha[j] * kept[j].second;
     }
-  std::vector<double> partial;
-  CF::Points separate = y;
-  CF::add_scaled(separate, -0.37, x);
-  const double separate_dot = CF::dot(z, separate, partial);
-  const double fused_dot = CF::add_scaled_then_dot(y, -0.37, x, z, partial);
-  CHECK(fused_dot == separate_dot);
-  CHECK(y == separate);
+    const Eigen::MatrixXd& y = kept.back().second;
+    const double gamma = dot(kept.back().first, y) / dot(y, inverse_k.asDiagonal() * y);
+    d = gamma * (inverse_k.asDiagonal() * d);
+    for(std::size_t j = 0; j < kept.size(); ++j)
+    {
+      const double beta = dot(kept[j].second, d) / dot(kept[j].first, kept[j].second);
+      d += (alpha[j] - beta) * kept[j].first;
+    }
+    return d;
+  };
+  const auto relative_error = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    return (a - b).norm() / b.norm();
+  };
+
+  // Pairs of a convex quadratic's gradients, but a concave one's for the sixth, which is skipped
+  // and takes the oldest pair's slot; after each, the product as the solver takes it.
+  double against_two_loop = 0, secant = 0;
+  CF::Points X = random_points();
+  for(int k = 0; k < int(Hessian::memory) + 4; ++k)
+  {
+    const double sign = k == 5 ? -1 : 1;
+    const CF::Points X_next = X + 0.1 * random_points();
+    const CF::Points G = sign * (curvature.asDiagonal() * X), G_next = sign * (curvature.asDiagonal() * X_next);
+    H.add_pair(X, X_next, G, G_next);
+    if(sign > 0)
+    {
+      kept.emplace_back((X_next - X).cast<float>().cast<double>(), (G_next - G).cast<float>().cast<double>());
+      if(kept.size() > Hessian::memory)
+        kept.erase(kept.begin());
+    }
+    else if(kept.size() == Hessian::memory)
+      kept.erase(kept.begin());
+    X = X_next;
+    CHECK(H.number_of_pairs() == kept.size());
+    const CF::Points q = random_points();
+    against_two_loop = (std::max)(against_two_loop, relative_error(three_passes(q), two_loop(q)));
+    secant = (std::max)(secant, relative_error(three_passes(kept.back().second), kept.back().first));
+  }
+  CHECK(against_two_loop < 1e-10);
+  CHECK(secant < 1e-10);
+  std::cout << "  inverse Hessian of 1 to " << Hessian::memory << " pairs: relative difference at most "
+            << against_two_loop << " to the two-loop recursion, " << secant << " to the secant condition" << std::endl;
 }
 
 // The iteration at which `options`' rule stops on the energies `energy(k)`, k = 0, 1, ..., or 0
@@ -279,7 +345,7 @@ int main()
 {
   check_surface_motion();
   check_stopping_rule();
-  check_fused_passes();
+  check_inverse_hessian();
   check_known_minimum(Deviation_bound::BALL);
   check_known_minimum(Deviation_bound::BOX);
   check_thread_count_independence();

@@ -54,16 +54,27 @@ void parallel_for_blocks(std::size_t n, const F& f)
     run(b);
 }
 
-// The sum over [0, n) of f(begin, end), each a partial sum over a block, added in block order.
-// `partial` is the caller's buffer, so that no call allocates once it has its size.
+// The sums over [0, n) of `count` values: f(begin, end, sums) writes a block's partial sums to
+// sums[0, count), and `result` gets their totals, each added in block order. `partial` is the
+// caller's buffer, so that no call allocates once it has its size.
+template <typename F>
+void parallel_sums(std::size_t n, std::size_t count, std::vector<double>& partial, double* result, const F& f)
+{
+  const std::size_t blocks = number_of_blocks(n);
+  partial.resize(blocks * count);
+  parallel_for_blocks(n, [&](std::size_t begin, std::size_t end, std::size_t b) { f(begin, end, partial.data() + b * count); });
+  std::fill(result, result + count, 0.);
+  for(std::size_t b = 0; b < blocks; ++b)
+    for(std::size_t c = 0; c < count; ++c)
+      result[c] += partial[b * count + c];
+}
+
+// The sum over [0, n) of f(begin, end), a partial sum over a block.
 template <typename F>
 double parallel_sum(std::size_t n, std::vector<double>& partial, const F& f)
 {
-  partial.resize(number_of_blocks(n));
-  parallel_for_blocks(n, [&](std::size_t begin, std::size_t end, std::size_t b) { partial[b] = f(begin, end); });
-  double sum = 0;
-  for(double s : partial)
-    sum += s;
+  double sum;
+  parallel_sums(n, 1, partial, &sum, [&](std::size_t begin, std::size_t end, double* block) { block[0] = f(begin, end); });
   return sum;
 }
 

@@ -45,9 +45,9 @@ using Float_points = Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor>;
 // <A, B> over all coordinates
 inline double dot(const Points& A, const Points& B) { return A.cwiseProduct(B).sum(); }
 
-// <A, B> over the rows [begin, end), in double. Every blockwise dot goes through this one
-// loop, so that a pass fused with other work gives the same bits as dot(). Four running sums:
-// with one, each addition waits for the one before, and the loop runs at the adder's latency.
+// <A, B> over the rows [begin, end), in double, for a pass over blocks of Parallel_for.h. Four
+// running sums: with one, each addition waits for the one before, and the loop runs at the
+// adder's latency.
 template <typename A, typename B>
 double dot_rows(const A& a, const B& b, std::size_t begin, std::size_t end)
 {
@@ -66,44 +66,6 @@ double dot_rows(const A& a, const B& b, std::size_t begin, std::size_t end)
   for(; i < n; ++i)
     s0 += double(pa[i]) * double(pb[i]);
   return (s0 + s1) + (s2 + s3);
-}
-
-// y += s x over the rows [begin, end).
-template <typename X>
-void add_scaled_rows(Points& y, double s, const X& x, std::size_t begin, std::size_t end)
-{
-  double* py = y.data() + 3 * begin;
-  const auto* px = x.data() + 3 * begin;
-  const std::size_t n = 3 * (end - begin);
-  for(std::size_t i = 0; i < n; ++i)
-    py[i] += s * double(px[i]);
-}
-
-// <A, B> in parallel over blocks of vertices, in double, `partial` the caller's buffer.
-template <typename A, typename B>
-double dot(const A& a, const B& b, std::vector<double>& partial)
-{
-  return parallel_sum(static_cast<std::size_t>(a.rows()), partial,
-                      [&](std::size_t begin, std::size_t end) { return dot_rows(a, b, begin, end); });
-}
-
-// y += s x in parallel over blocks of vertices.
-template <typename X>
-void add_scaled(Points& y, double s, const X& x)
-{
-  parallel_for_blocks(static_cast<std::size_t>(y.rows()),
-                      [&](std::size_t begin, std::size_t end, std::size_t) { add_scaled_rows(y, s, x, begin, end); });
-}
-
-// y += s x, then <z, y>, block by block: the block of y is read again while in cache. The same
-// results as add_scaled() then dot().
-template <typename X, typename Z>
-double add_scaled_then_dot(Points& y, double s, const X& x, const Z& z, std::vector<double>& partial)
-{
-  return parallel_sum(static_cast<std::size_t>(y.rows()), partial, [&](std::size_t begin, std::size_t end) {
-    add_scaled_rows(y, s, x, begin, end);
-    return dot_rows(z, y, begin, end);
-  });
 }
 
 // <G, Y - X>

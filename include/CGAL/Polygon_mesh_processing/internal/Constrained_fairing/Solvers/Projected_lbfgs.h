@@ -9,10 +9,8 @@
 // needle triangles than on the others. Quasi-Newton pairs learn the curvature from the
 // gradients themselves, with no factorization, and cost one energy and gradient evaluation per
 // iteration in the common case where the step 1 is accepted. Their initial matrix is the
-// stiffness preconditioner (Stiffness_preconditioner.h), recomputed at every iterate.
-//
-// The pairs are stored in single precision: they only shape the direction, whose descent is
-// checked in double, and they are most of the solver's memory.
+// stiffness preconditioner (Stiffness_preconditioner.h), recomputed at every iterate; the
+// inverse Hessian is applied in three passes over the vertices (Lbfgs_inverse_hessian.h).
 //
 // Each iteration:
 //  1. the active set: the vertices on the boundary of their bound that -g pushes outwards;
@@ -39,6 +37,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Iteration_callback.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Lbfgs_inverse_hessian.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_line_search.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
@@ -46,7 +45,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Stopping_rule.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Surface_motion.h>
 
-#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -60,8 +58,6 @@ template <typename Bound, typename Objective = Fairing_objective>
 class Projected_lbfgs
 {
 public:
-  // The number of (step, gradient change) pairs kept.
-  static constexpr std::size_t memory = 5;
   // lambda of the sufficient decrease condition
   static constexpr double sufficient_decrease = 1e-4;
   // The longest move of a vertex in one step, relative to its reach (Stiffness_and_reach). A tenth
@@ -96,7 +92,7 @@ public:
     precondition(m_G, m_D);
     const double largest_step = m_D.rowwise().norm().maxCoeff();
     double t_gradient = largest_step > 0 ? m_bound.largest_size() / largest_step : 0;
-    m_pairs = 0;
+    m_H.clear();
 
     while(report.iterations < options.max_iterations)
     {
@@ -107,17 +103,25 @@ public:
       }
       m_active.compute(m_bound, X, m_G);
       double slope = 0;
-      if(m_pairs > 0)
+      const auto write_restricted_negative_gradient = [&](Points& D, std::size_t begin, std::size_t end) {
+        for(std::size_t i = begin; i < end; ++i)
+          point(D, i) = -point(m_G, i);
+        m_active.restrict_range(D, begin, end);
+      };
+      if(m_H.number_of_pairs() > 0 && m_H.start(m_D, m_scales.stiffness, write_restricted_negative_gradient))
+        slope = finish_direction([&](std::size_t begin, std::size_t end) {
+          m_H.finish_rows(m_D, begin, end);
+          m_active.restrict_range(m_D, begin, end);
+        });
+      if(m_H.number_of_pairs() == 0 || !(slope < 0))
       {
-        apply_inverse_hessian(m_D, restricted_negative_gradient(&m_s[m_newest]));
-        slope = finish_direction(true);
-      }
-      if(m_pairs == 0 || !(slope < 0))
-      {
-        m_pairs = 0;
-        restricted_negative_gradient(nullptr);
+        m_H.clear();
+        m_D.resize(m_G.rows(), 3);
+        parallel_for_blocks(static_cast<std::size_t>(m_G.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+          write_restricted_negative_gradient(m_D, begin, end);
+        });
         apply_inverse_stiffness(m_scales, m_D, m_D, t_gradient);
-        slope = finish_direction(false);
+        slope = finish_direction([](std::size_t, std::size_t) {});
       }
 
       const auto sufficient = [&](double e, const Points& Y) {
@@ -126,17 +130,17 @@ public:
       Projected_line_search::Accepted accepted{m_X};
       if(!m_search.backtrack(X, m_D, 1., E, slope, m_bound, m_energy, sufficient, accepted, m_G_next, m_scales_next))
       {
-        if(m_pairs > 0)
+        if(m_H.number_of_pairs() > 0)
         {
-          m_pairs = 0; // the pairs misled: redo the iteration along the projected gradient
+          m_H.clear(); // the pairs misled: redo the iteration along the projected gradient
           continue;
         }
         report.status = Constrained_fairing_status::CONVERGED; // stationary up to rounding
         break;
       }
-      if(m_pairs == 0)
+      if(m_H.number_of_pairs() == 0)
         t_gradient *= accepted.step;
-      add_pair(X, m_G);
+      m_H.add_pair(X, m_X, m_G, m_G_next);
       X.swap(m_X);
       m_G.swap(m_G_next);
       m_scales.swap(m_scales_next);
@@ -150,40 +154,23 @@ public:
     report.energy_evaluations = m_search.evaluations() - evaluations_before + 1;
     // A run starts with no pairs: their memory, nearly half the solver's, is returned for what
     // runs between two runs (fold repair's tests).
-    for(std::size_t k = 0; k < memory; ++k)
-    {
-      m_s[k].resize(0, 3);
-      m_y[k].resize(0, 3);
-    }
+    m_H.release();
     return report;
   }
 
 private:
-  // D = -G restricted to the active face; with `s`, also returns <s, D> (the two-loop's first
-  // dot), in the same pass.
-  double restricted_negative_gradient(const Float_points* s)
-  {
-    m_D.resize(m_G.rows(), 3);
-    return parallel_sum(static_cast<std::size_t>(m_G.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t i = begin; i < end; ++i)
-        point(m_D, i) = -point(m_G, i);
-      m_active.restrict_range(m_D, begin, end);
-      return s ? dot_rows(*s, m_D, begin, end) : 0.;
-    });
-  }
-
-  // Restricts D to the active face if `restricted`, shortens the displacement of each vertex to at
-  // most `reach_fraction` of its reach, and returns the slope <D, G>, in one pass. Why the reach:
-  // then no step can flip or collapse a triangle (see reach_fraction), and the limit is a trust
-  // region per vertex, short where triangles degenerate and long where they have room. Without
-  // it, the energy's pull towards slivers (see the user manual) makes the quasi-Newton step
-  // overshoot on a few vertices at nearly every iteration, and that one vertex gets the whole
-  // step rejected.
-  double finish_direction(bool restricted)
+  // Calls `rows(begin, end)` on each block of D (the direction's last steps), shortens the
+  // displacement of each vertex to at most `reach_fraction` of its reach, and returns the slope
+  // <D, G>, in one pass. Why the reach: then no step can flip or collapse a triangle (see
+  // reach_fraction), and the limit is a trust region per vertex, short where triangles
+  // degenerate and long where they have room. Without it, the energy's pull towards slivers (see
+  // the user manual) makes the quasi-Newton step overshoot on a few vertices at nearly every
+  // iteration, and that one vertex gets the whole step rejected.
+  template <typename Rows>
+  double finish_direction(const Rows& rows)
   {
     return parallel_sum(static_cast<std::size_t>(m_D.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
-      if(restricted)
-        m_active.restrict_range(m_D, begin, end);
+      rows(begin, end);
       for(std::size_t i = begin; i < end; ++i)
       {
         const double length = point(m_D, i).norm(), limit = reach_fraction * m_scales.reach[static_cast<Eigen::Index>(i)];
@@ -200,65 +187,6 @@ private:
     apply_inverse_stiffness(m_scales, r, D);
   }
 
-  // Stores s = x_next - x and y = g_next - g if their curvature s.y is positive (else the
-  // pair would make H indefinite and is skipped).
-  void add_pair(const Points& X, const Points& G)
-  {
-    const std::size_t slot = (m_newest + 1) % memory;
-    Float_points &s = m_s[slot], &y = m_y[slot];
-    s.resize(X.rows(), 3);
-    y.resize(X.rows(), 3);
-    const double sy = parallel_sum(static_cast<std::size_t>(X.rows()), m_partial, [&](std::size_t begin, std::size_t end) {
-      double sum = 0;
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const auto row = static_cast<Eigen::Index>(i);
-        s.row(row) = (point(m_X, i) - point(X, i)).transpose().cast<float>();
-        y.row(row) = (point(m_G_next, i) - point(G, i)).transpose().cast<float>();
-        sum += s.row(row).cast<double>().dot(y.row(row).cast<double>());
-      }
-      return sum;
-    });
-    if(!(sy > 0))
-    {
-      if(m_pairs == memory) // the slot held the oldest pair
-        --m_pairs;
-      return;
-    }
-    m_rho[slot] = 1 / sy;
-    m_newest = slot;
-    if(m_pairs < memory)
-      ++m_pairs;
-  }
-
-  // D = H D in place by the two-loop recursion, H0 = gamma K^-1 with gamma = s.y / (y.K^-1 y)
-  // for the newest pair; `sD` is <s, D> for the newest pair's s. Each update of D is fused
-  // with the next loop's dot on D.
-  void apply_inverse_hessian(Points& D, double sD)
-  {
-    const auto pair = [&](std::size_t k) { return (m_newest + memory - k) % memory; }; // k-th newest
-    m_alpha[m_newest] = m_rho[m_newest] * sD;
-    for(std::size_t k = 0; k < m_pairs; ++k) // newest to oldest
-    {
-      const std::size_t j = pair(k);
-      if(k + 1 < m_pairs)
-        m_alpha[pair(k + 1)] = m_rho[pair(k + 1)] * add_scaled_then_dot(D, -m_alpha[j], m_y[j], m_s[pair(k + 1)], m_partial);
-      else
-        add_scaled(D, -m_alpha[j], m_y[j]);
-    }
-    const double gamma = 1 / (m_rho[m_newest] * inverse_stiffness_norm2(m_scales, m_y[m_newest], m_partial));
-    apply_inverse_stiffness(m_scales, D, D, gamma);
-    double beta = m_rho[pair(m_pairs - 1)] * dot(m_y[pair(m_pairs - 1)], D, m_partial);
-    for(std::size_t k = m_pairs; k-- > 0;) // oldest to newest
-    {
-      const std::size_t j = pair(k);
-      if(k > 0)
-        beta = m_rho[pair(k - 1)] * add_scaled_then_dot(D, m_alpha[j] - beta, m_s[j], m_y[pair(k - 1)], m_partial);
-      else
-        add_scaled(D, m_alpha[j] - beta, m_s[j]);
-    }
-  }
-
   const Bound& m_bound;
   Objective& m_energy;
   Active_set<Bound> m_active;
@@ -266,9 +194,7 @@ private:
   // gradient, direction, next point and its gradient
   Points m_G, m_D, m_X, m_G_next;
   Stiffness_and_reach m_scales, m_scales_next; // at the iterate and at the next point
-  std::array<Float_points, memory> m_s, m_y;
-  std::array<double, memory> m_rho{}, m_alpha{};
-  std::size_t m_pairs = 0, m_newest = 0;
+  Lbfgs_inverse_hessian m_H;
   std::vector<double> m_partial;
 };
 

@@ -16,7 +16,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <cstddef>
-#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -38,23 +37,6 @@ void apply_inverse_stiffness(const Stiffness_and_reach& scales, const R& r, Poin
       if(gamma != 1)
         point(D, i) = gamma * point(D, i);
     }
-  });
-}
-
-// <R, K^-1 R>, `partial` the caller's buffer (Points.h's dot()).
-template <typename R>
-double inverse_stiffness_norm2(const Stiffness_and_reach& scales, const R& r, std::vector<double>& partial)
-{
-  return parallel_sum(static_cast<std::size_t>(r.rows()), partial, [&](std::size_t begin, std::size_t end) {
-    double sum = 0;
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      const auto row = static_cast<Eigen::Index>(i);
-      const double k = scales.stiffness[row];
-      if(k > 0)
-        sum += r.row(row).template cast<double>().squaredNorm() / k;
-    }
-    return sum;
   });
 }
 
