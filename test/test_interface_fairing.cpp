@@ -9,7 +9,7 @@
 //    meet it does not move at all;
 //  - the objective does not rise, and the interfaces come closer to their true surfaces than the
 //    raw surface nets: 4 times on the sphere, twice on the plane, 1.5 times on the triple line
-//    (measured: 8.6 and 8.0, 3.7 and 3.0, 1.9 and 3.0 with cubic and 1 x 1 x 3 voxels);
+//    (measured: 8.2 and 8.0, 3.7 and 2.9, 1.9 and 3.0 with cubic and 1 x 1 x 3 voxels);
 //  - each label's surface is still closed, valid and outward, and none intersects itself; a second
 //    call gives the same points, bit for bit; the deviation map agrees with the result;
 //  - the volume term (Label_volumes.h): its gradient against central finite differences, on

@@ -29,6 +29,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Stiffness_preconditioner.h>
 
 #include <CGAL/assertions.h>
 
@@ -118,14 +119,7 @@ public:
         block[j] = dot_rows(m_s[pair(j)], Q, begin, end);
       for(std::size_t i = 0; i + 1 < m; ++i)
         block[m + i] = dot_rows(m_s[pair(i)], newest_y, begin, end);
-      double yKy = 0;
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const double k = stiffness[static_cast<Eigen::Index>(i)];
-        if(k > 0)
-          yKy += newest_y.row(static_cast<Eigen::Index>(i)).cast<double>().squaredNorm() / k;
-      }
-      block[2 * m - 1] = yKy;
+      block[2 * m - 1] = inverse_stiffness_norm2_rows(stiffness, newest_y, begin, end);
     });
     for(std::size_t i = 0; i + 1 < m; ++i)
       m_sy[pair(i)][m_newest] = sums[m + i];

@@ -40,6 +40,22 @@ void apply_inverse_stiffness(const Stiffness_and_reach& scales, const R& r, Poin
   });
 }
 
+// <R, K^-1 R> over the rows [begin, end) (a block of Parallel_for.h), with the same rule: a vertex
+// with no stiffness adds nothing.
+template <typename R>
+double inverse_stiffness_norm2_rows(const Eigen::VectorXd& stiffness, const R& r, std::size_t begin, std::size_t end)
+{
+  double sum = 0;
+  for(std::size_t i = begin; i < end; ++i)
+  {
+    const auto row = static_cast<Eigen::Index>(i);
+    const double k = stiffness[row];
+    if(k > 0)
+      sum += r.row(row).template cast<double>().squaredNorm() / k;
+  }
+  return sum;
+}
+
 } // namespace Constrained_fairing
 } // namespace internal
 } // namespace Polygon_mesh_processing
