@@ -62,11 +62,14 @@ outside the array count as `background`.
   are joined around it anyway is, else the smaller label. Where a junction would pinch a label
   or two sheets would share an edge, a sheet gets several points on a ridge; the holes the ridge
   leaves in the interfaces are capped by triangles of the cell's points, around one more point
-  in a free octant of the cell where they border several interfaces. So every label's surface is
-  a manifold (made by `label_surface()` without splitting), except in rare cells where two labels
-  each touch themselves at the centre with others around: there one of them (the background
-  first, which has no surface) is left touching itself and the other is split apart. No two
-  boxes meet: the points stay apart through any fairing within their boxes.
+  in a free octant of the cell where they border several interfaces. Where two labels each touch
+  themselves at the centre with others around, an edge of four labels next to the centre gets
+  two points at the cell, one for the faces around each of two opposite voxels, and the other two
+  labels meet between them across a triangle of those points and the next cell's point along the
+  edge. So every label's surface is a manifold (made by `label_surface()` without splitting),
+  except in rare cells that no such choice serves (none in Debian's atlases; some in random
+  voxels of several labels): there one label is left touching itself. No two boxes meet: the
+  points stay apart through any fairing within their boxes.
 - Points of cells of several points, at the centres of their boxes, can fold a triangle onto its
   neighbour or through another: the points of such triangles, of any cell, move to the mean of
   their neighbours (with the points around them after the first round), within seven eighths
@@ -122,9 +125,23 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   };
   // Dual cell c = (ci, cj, ck), each in [0, n], lies between voxels c - 1 and c on each axis.
   const std::size_t cells[3] = {size[0] + 1, size[1] + 1, size[2] + 1};
+  // The cells that split rings, in their order, with the rings they split: the cell after one
+  // along a split ring's axis leaves that ring whole, so that the bridge ends at its point.
+  std::vector<std::pair<std::size_t, unsigned> > split_rings;
   const auto cell_at = [&](const Signed c[3]) {
+    unsigned unsplit = 0;
+    const std::size_t stride[3] = {cells[1] * cells[2], cells[2], 1};
+    const std::size_t index = (std::size_t(c[0]) * cells[1] + std::size_t(c[1])) * cells[2] + std::size_t(c[2]);
+    for(int a = 0; a < 3; ++a)
+      if(c[a] > 0)
+      {
+        const auto before = std::lower_bound(split_rings.begin(), split_rings.end(), index - stride[a],
+                                             [](const auto& x, std::size_t i) { return x.first < i; });
+        if(before != split_rings.end() && before->first == index - stride[a] && (before->second & (1u << (2 * a + 1))))
+          unsplit |= 1u << (2 * a);
+      }
     return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, background,
-                margin);
+                margin, unsplit);
   };
 
   // The points, cell by cell, each at the centre of its box; the cells of more than one point are
@@ -133,6 +150,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   std::vector<std::uint32_t> first_point(cells[0] * cells[1] * cells[2], none);
   std::vector<std::pair<std::size_t, std::array<std::int8_t, 24> > > split;
   std::vector<std::pair<std::array<std::size_t, 3>, std::array<Label, 2> > > caps; // points, labels
+  std::vector<std::pair<std::array<Signed, 3>, typename Cell::Bridge> > bridges; // cell, bridge
   std::vector<bool> of_split_cell;
   const std::size_t first = points.size(), first_triangle = triangles.size(), first_box = box_half_extents.size();
   std::size_t cell = 0;
@@ -161,6 +179,10 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
             for(std::size_t k = 0; k < 3; ++k)
               caps.back().first[k] = first + first_point[cell] + std::size_t(cap.points[k]);
           }
+          for(const auto& bridge : dual.bridges())
+            bridges.push_back({{c[0], c[1], c[2]}, bridge});
+          if(dual.split_rings() != 0)
+            split_rings.emplace_back(cell, dual.split_rings());
         }
         for(int s = 0; s < dual.size(); ++s)
         {
@@ -192,12 +214,19 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     const std::size_t m = left.size();
     return std::array<std::size_t, 3>{left[(e + m - 1) % m].first, left[e].first, left[(e + 1) % m].first};
   };
+  const auto point_of = [&](std::size_t v) {
+    return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]), CGAL::to_double(points[v][2]));
+  };
   const auto flat = [&](const std::array<std::size_t, 3>& t) {
-    const auto p = [&](std::size_t v) {
-      return Epick::Point_3(CGAL::to_double(points[v][0]), CGAL::to_double(points[v][1]),
-                            CGAL::to_double(points[v][2]));
-    };
-    return CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
+    return CGAL::collinear(point_of(t[0]), point_of(t[1]), point_of(t[2]));
+  };
+  // The points of a cell of several points at each face's corner (2 f + 0 next to its dual edge
+  // along axis (f / 4 + 1) % 3, 2 f + 1 along the other), relative to its first; null for a
+  // cell of one point.
+  const auto corners_of = [&split](std::size_t index) -> const std::array<std::int8_t, 24>* {
+    const auto found = std::lower_bound(split.begin(), split.end(), index,
+                                        [](const auto& x, std::size_t i) { return x.first < i; });
+    return found != split.end() && found->first == index ? &found->second : nullptr;
   };
   // The ears whose diagonal joins opposite cells, those whose triangle is not flat (points of
   // split cells can line up) first; flat: the ear, or what a quad leaves after it. A triangle is
@@ -262,9 +291,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
             q[w] = a[w] + dw[k];
             const std::size_t index = (std::size_t(q[0]) * cells[1] + std::size_t(q[1])) * cells[2] + std::size_t(q[2]);
             const std::size_t base = first + first_point[index];
-            const auto found = std::lower_bound(split.begin(), split.end(), index,
-                                                [](const auto& x, std::size_t i) { return x.first < i; });
-            if(found == split.end() || found->first != index)
+            const std::array<std::int8_t, 24>* corners = corners_of(index);
+            if(!corners)
             {
               polygon.emplace_back(base, k);
               continue;
@@ -273,8 +301,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
             // at corner k along u (k odd) or w and leaves along the other.
             const int face = 4 * axis + (1 - du[k]) + 2 * (1 - dw[k]);
             const int in = k % 2 == 1 ? 0 : 1;
-            const std::size_t from = base + std::size_t(found->second[std::size_t(2 * face + in)]),
-                              to = base + std::size_t(found->second[std::size_t(2 * face + 1 - in)]);
+            const std::size_t from = base + std::size_t((*corners)[std::size_t(2 * face + in)]),
+                              to = base + std::size_t((*corners)[std::size_t(2 * face + 1 - in)]);
             polygon.emplace_back(from, k);
             if(to != from)
               polygon.emplace_back(to, k);
@@ -305,6 +333,41 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     triangles.push_back({Point_index(cap.first[0]), Point_index(cap.first[1]), Point_index(cap.first[2])});
     face_labels.push_back(cap.second);
   }
+  // Each bridge: the triangle of its cell's two points and the point of the next cell along the
+  // ring's half-axis, where the ring's faces meet (that cell leaves the ring whole), turned so
+  // that its normal points from the region of its first label into its second's.
+  for(const auto& [at, bridge] : bridges)
+  {
+    Signed next[3] = {at[0], at[1], at[2]};
+    next[bridge.axis] += bridge.side == 1 ? 1 : -1;
+    const std::size_t index = (std::size_t(next[0]) * cells[1] + std::size_t(next[1])) * cells[2] + std::size_t(next[2]);
+    const std::size_t here = first + first_point[(std::size_t(at[0]) * cells[1] + std::size_t(at[1])) * cells[2] +
+                                                 std::size_t(at[2])];
+    // The next cell's corner of a face of the ring: in its block, the face's voxels are on the
+    // other side along the ring's axis.
+    std::size_t there = first + first_point[index];
+    if(const std::array<std::int8_t, 24>* corners = corners_of(index))
+    {
+      const int f = bridge.faces[0], along_u = bridge.axis == (f / 4 + 1) % 3;
+      there += std::size_t((*corners)[std::size_t(2 * (f ^ (along_u ? 1 : 2)) + (along_u ? 0 : 1))]);
+    }
+    std::array<std::size_t, 3> t = {here + std::size_t(bridge.points[0]), here + std::size_t(bridge.points[1]), there};
+    std::array<Epick::Point_3, 2> centre;
+    for(std::size_t v = 0; v < 2; ++v)
+    {
+      double x[3];
+      for(int a = 0; a < 3; ++a)
+        x[a] = origin[std::size_t(a)] + double(at[a] - 1 + ((bridge.voxels[v] >> a) & 1)) * spacing[std::size_t(a)];
+      centre[v] = Epick::Point_3(x[0], x[1], x[2]);
+    }
+    const CGAL::Orientation second = CGAL::orientation(point_of(t[0]), point_of(t[1]), point_of(t[2]), centre[1]);
+    if(second == CGAL::NEGATIVE ||
+       (second == CGAL::COPLANAR &&
+        CGAL::orientation(point_of(t[0]), point_of(t[1]), point_of(t[2]), centre[0]) == CGAL::POSITIVE))
+      std::swap(t[0], t[1]);
+    triangles.push_back({Point_index(t[0]), Point_index(t[1]), Point_index(t[2])});
+    face_labels.push_back(bridge.labels);
+  }
 
   // Points of split cells can line up (a staircase of cells split alike): the middle point of a
   // triangle on a line moves off it by half its box along the axis the line runs least along, its
@@ -316,12 +379,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     bool moved = false;
     for(std::size_t t = first_triangle; t < triangles.size(); ++t)
     {
-      std::array<Epick::Point_3, 3> p;
-      for(int k = 0; k < 3; ++k)
-      {
-        const auto& q = points[std::size_t(triangles[t][std::size_t(k)])];
-        p[std::size_t(k)] = Epick::Point_3(CGAL::to_double(q[0]), CGAL::to_double(q[1]), CGAL::to_double(q[2]));
-      }
+      const std::array<Epick::Point_3, 3> p = {point_of(std::size_t(triangles[t][0])), point_of(std::size_t(triangles[t][1])),
+                                               point_of(std::size_t(triangles[t][2]))};
       if(!CGAL::collinear(p[0], p[1], p[2]))
         continue;
       int middle = 0;

@@ -27,11 +27,16 @@
 // the ridge leaves are capped: by a fan of triangles of one interface where they border one, else
 // by a fan around a junction, a point of no face, for each group of holes that share segments.
 // Two labels pinched at one sheet, with two others around, can tie their seeds together (each
-// node borders a region of each): then a label is left whole, unseeded, its regions passing each
-// other through the gap that the other's ridge opens: the first whose leaving unties the seeds
-// and lets the ridges close, the background first (it has no surface of its own, so nothing is
-// left touching itself), then the block's labels in order. A label so left touches itself at the
-// ridge, and label_surface() splits it there.
+// node borders a region of each). Then rings whose four voxels have four labels are split: the
+// faces around one diagonal's voxels at two nodes, so that the sheets part the pinched labels'
+// regions, and the other diagonal's two labels meet in the gap between the nodes, across a
+// bridge: a triangle of the two nodes' points and the next cell's point along the ring (that
+// cell leaves the ring whole). The fewest splits that untie the seeds and close every
+// label's surface are taken. Where none does, a label is left whole, unseeded, its regions passing
+// each other through the gap that the other's ridge opens: the first whose leaving unties the
+// seeds and lets the ridges close, the background first (it has no surface of its own, so nothing
+// is left touching itself), then the block's labels in order. A label so left touches itself at
+// the ridge, and label_surface() splits it there.
 //
 // Each point's box: the cell shrunk by `margin` (a fraction of the spacing) on every side for a
 // cell of one point; with more, the half or whole of each axis that the quarters of its faces
@@ -45,6 +50,8 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 
+#include <CGAL/assertions.h>
+
 #include <boost/container/static_vector.hpp>
 
 #include <algorithm>
@@ -53,6 +60,7 @@
 #include <cstdint>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -107,7 +115,19 @@ public:
   int node(int f, int axis) const { return m_node[std::size_t(f)][axis == (f / 4 + 1) % 3 ? 0 : 1]; }
   // Ring 2 a + s: around the half-axis of axis a on side s; its faces in order around it.
   const std::array<int, 4>& ring_faces(int ring) const { return m_ring_faces[std::size_t(ring)]; }
+  // The ring's voxels in the same order: face i of the ring lies between voxels i and i + 1.
+  const std::array<int, 4>& ring_voxels(int ring) const { return m_ring_voxels[std::size_t(ring)]; }
   bool paired(int ring) const { return m_paired[std::size_t(ring)]; }
+  // Whether the ring's four voxels have four different labels (its faces then join in one node).
+  bool four_labels(int ring) const { return m_four_labels[std::size_t(ring)]; }
+  // Splits the node of a ring of four labels as a paired ring's: the faces around voxel k + 1 (k
+  // is 0 or 1) at node 0, those around voxel k + 3 at node 1. Voxels k and k + 2, of two labels,
+  // then meet in the gap between the two nodes, and a face between them (a bridge) must close it.
+  void split(int ring, int k)
+  {
+    CGAL_precondition(four_labels(ring) && (k == 0 || k == 1));
+    pair_faces(ring, k);
+  }
   // The sheet of each node (the nodes joined through faces), named by one of its nodes.
   std::array<int, 12> sheets() const
   {
@@ -161,20 +181,17 @@ private:
       face[std::size_t(i)] = 4 * b + ((o >> ((b + 1) % 3)) & 1) + 2 * ((o >> ((b + 2) % 3)) & 1);
     }
     m_ring_faces[std::size_t(ring_index)] = face;
+    m_ring_voxels[std::size_t(ring_index)] = voxel;
     int count = 0;
     for(int i = 0; i < 4; ++i)
       count += ring[std::size_t(i)] != ring[std::size_t((i + 1) % 4)];
     const bool repeat02 = ring[0] == ring[2], repeat13 = ring[1] == ring[3];
     m_paired[std::size_t(ring_index)] = count == 4 && (repeat02 || repeat13);
-    const auto set_node = [&](int i, int pair) {
-      const int f = face[std::size_t(i)];
-      if(m_active[std::size_t(f)])
-        m_node[std::size_t(f)][a == (f / 4 + 1) % 3 ? 0 : 1] = 2 * ring_index + pair;
-    };
+    m_four_labels[std::size_t(ring_index)] = count == 4 && !repeat02 && !repeat13;
     if(!m_paired[std::size_t(ring_index)])
     {
       for(int i = 0; i < 4; ++i)
-        set_node(i, 0);
+        set_node(ring_index, i, 0);
       return;
     }
     // Voxels i and i + 2 of the ring joined through a layer beside it.
@@ -193,19 +210,32 @@ private:
     }
     const int k = bridge02 ? 0 : 1; // the bridge's voxels are k and k + 2
     join_regions(voxel[std::size_t(k)], voxel[std::size_t(k + 2)]);
-    // Pair 0 around voxel k + 1 (faces k, k + 1), pair 1 around voxel k + 3 (faces k + 2, k + 3).
-    set_node(k, 0);
-    set_node(k + 1, 0);
-    set_node(k + 2, 1);
-    set_node((k + 3) % 4, 1);
+    pair_faces(ring_index, k);
+  }
+
+  // Face i of the ring at node `pair` of the ring.
+  void set_node(int ring, int i, int pair)
+  {
+    const int f = m_ring_faces[std::size_t(ring)][std::size_t(i)];
+    if(m_active[std::size_t(f)])
+      m_node[std::size_t(f)][ring / 2 == (f / 4 + 1) % 3 ? 0 : 1] = 2 * ring + pair;
+  }
+
+  // Pair 0 around voxel k + 1 (faces k, k + 1), pair 1 around voxel k + 3 (faces k + 2, k + 3).
+  void pair_faces(int ring, int k)
+  {
+    set_node(ring, k, 0);
+    set_node(ring, k + 1, 0);
+    set_node(ring, k + 2, 1);
+    set_node(ring, (k + 3) % 4, 1);
   }
 
   std::array<Label, 8> m_block;
   std::array<int, 8> m_region;
   std::array<bool, 12> m_active;
   std::array<std::array<int, 2>, 12> m_node;
-  std::array<std::array<int, 4>, 6> m_ring_faces;
-  std::array<bool, 6> m_paired;
+  std::array<std::array<int, 4>, 6> m_ring_faces, m_ring_voxels;
+  std::array<bool, 6> m_paired, m_four_labels;
 };
 
 // The seeds of a cell's points: ids planted on nodes. The ids planted on one node are one point;
@@ -277,8 +307,10 @@ class Dual_cell
 
 public:
   // `label(d0, d1, d2)`: the label of the voxel at offset d (each in -2 .. 3) from the block's first.
+  // `unsplit_rings`: bit r set where ring r may not be split, for the cell before this one along
+  // its axis has split it (the bridge there ends at this cell's point of the ring).
   template <typename LabelAt>
-  Dual_cell(const LabelAt& label, Label background, double margin) : m_nodes(label)
+  Dual_cell(const LabelAt& label, Label background, double margin, unsigned unsplit_rings = 0) : m_nodes(label)
   {
     m_point.fill(none);
     if(m_nodes.uniform())
@@ -288,10 +320,13 @@ public:
     seed_doubled_edges(label, sheet, doubled);
     Dual_cell_seeds seeds = doubled;
     seed_pinched_labels(sheet, seeds, std::nullopt);
-    // Two pinched labels may tie their seeds together; then one of them is left whole, its
-    // regions joined through the gap that the other's ridge opens between its own: the first
-    // label that unties the seeds and whose ridges close, the background (which has no surface
-    // of its own) before the others in the block's order.
+    // Two pinched labels may tie their seeds together; then rings of four labels are split, or
+    // where no split serves, one of them is left whole, its regions joined through the gap that
+    // the other's ridge opens between its own: the first label that unties the seeds and whose
+    // ridges close, the background (which has no surface of its own) before the others in the
+    // block's order.
+    if(seeds.conflict() && place_with_bridges(label, margin, unsplit_rings))
+      return;
     bool placed = false;
     if(seeds.conflict())
     {
@@ -333,11 +368,120 @@ public:
     std::array<Label, 2> labels;
   };
   const std::vector<Cap>& caps() const { return m_caps; }
+  // The faces that close the gaps of the split rings of four labels (Dual_cell_nodes::split()):
+  // each a triangle of the cell's points of the ring's two pairs and the next cell's point along
+  // the ring's half-axis, between the labels of the two voxels that meet in the gap.
+  struct Bridge
+  {
+    int axis, side;             // the ring's half-axis: side 1 towards the next cell along `axis`
+    std::array<int, 2> points;  // the points of the faces around the ring's voxels k + 1 and k + 3
+    std::array<int, 2> faces;   // a face of each pair
+    std::array<int, 2> voxels;  // the ring's voxels k and k + 2
+    std::array<Label, 2> labels;
+  };
+  const std::vector<Bridge>& bridges() const { return m_bridges; }
+  // Bit r set where ring r is split.
+  unsigned split_rings() const
+  {
+    unsigned rings = 0;
+    for(const Bridge& bridge : m_bridges)
+      rings |= 1u << (2 * bridge.axis + bridge.side);
+    return rings;
+  }
   // Point p's box, relative to the cell's centre in spacings along axis c.
   double low(int p, int c) const { return m_low[std::size_t(p)][std::size_t(c)]; }
   double high(int p, int c) const { return m_high[std::size_t(p)][std::size_t(c)]; }
 
 private:
+  // Where two pinched labels tie their seeds together, rings of four labels are split: the faces
+  // around one diagonal's voxels at two nodes, the other diagonal's labels meeting in the gap and
+  // parted by a bridge. Of the choices (each ring left whole or split along either diagonal), the
+  // first with the fewest splits that unties the seeds, closes every label's surface across the
+  // cell's segments and makes the boxes; false, and the cell as it was, where none does.
+  template <typename LabelAt>
+  bool place_with_bridges(const LabelAt& label, double margin, unsigned unsplit_rings)
+  {
+    const Dual_cell_nodes<Label> whole = m_nodes;
+    boost::container::static_vector<int, 6> rings;
+    int choices = 1;
+    for(int ring = 0; ring < 6; ++ring)
+      if(whole.four_labels(ring) && !(unsplit_rings & (1u << ring)))
+        rings.push_back(ring), choices *= 3;
+    for(int splits = 1; splits <= int(rings.size()); ++splits)
+      for(int choice = 0; choice < choices; ++choice)
+      {
+        int count = 0;
+        for(int c = choice; c > 0; c /= 3)
+          count += c % 3 != 0;
+        if(count != splits)
+          continue;
+        m_nodes = whole;
+        m_bridges.clear();
+        int c = choice;
+        for(const int ring : rings)
+        {
+          const int k = c % 3 - 1;
+          c /= 3;
+          if(k < 0)
+            continue;
+          m_nodes.split(ring, k);
+          const std::array<int, 4>& faces = m_nodes.ring_faces(ring);
+          const std::array<int, 4>& voxels = m_nodes.ring_voxels(ring);
+          const int v0 = voxels[std::size_t(k)], v2 = voxels[std::size_t(k + 2)];
+          m_bridges.push_back({ring / 2, ring % 2, {none, none}, {faces[std::size_t(k)], faces[std::size_t(k + 2)]},
+                               {v0, v2}, {m_nodes.label(v0), m_nodes.label(v2)}});
+        }
+        const std::array<int, 12> sheet = m_nodes.sheets();
+        Dual_cell_seeds seeds;
+        seed_doubled_edges(label, sheet, seeds);
+        seed_pinched_labels(sheet, seeds, std::nullopt);
+        if(seeds.conflict() || !place_points(sheet, seeds))
+          continue;
+        bool apart = true;
+        for(const Bridge& bridge : m_bridges)
+          apart = apart && bridge.points[0] != bridge.points[1];
+        if(apart && surfaces_closed() && make_boxes(margin))
+          return true;
+      }
+    m_nodes = whole;
+    m_bridges.clear();
+    one_point_per_sheet(m_nodes.sheets());
+    return false;
+  }
+
+  // Whether each label's surface is closed across the segments between the cell's points: each
+  // segment that a face's corner, a cap or a bridge of the label runs along has two of them.
+  bool surfaces_closed() const
+  {
+    std::vector<std::pair<Label, std::array<int, 2> > > uses;
+    const auto use = [&uses](Label l, int p, int q) {
+      if(p != q)
+        uses.push_back({l, {(std::min)(p, q), (std::max)(p, q)}});
+    };
+    for(int f = 0; f < 12; ++f)
+      if(m_nodes.active(f))
+        for(int side = 0; side < 2; ++side)
+          use(m_nodes.label(voxel_of_face(f, side)), m_point[std::size_t(3 * f)], m_point[std::size_t(3 * f + 1)]);
+    for(const Cap& cap : m_caps)
+      for(const Label l : cap.labels)
+        for(std::size_t k = 0; k < 3; ++k)
+          use(l, cap.points[k], cap.points[(k + 1) % 3]);
+    for(const Bridge& bridge : m_bridges)
+      for(const Label l : bridge.labels)
+        use(l, bridge.points[0], bridge.points[1]);
+    std::sort(uses.begin(), uses.end());
+    for(std::size_t i = 0; i < uses.size();)
+    {
+      std::size_t j = i;
+      while(j < uses.size() && uses[j] == uses[i])
+        ++j;
+      if(j - i != 2)
+        return false;
+      i = j;
+    }
+    return true;
+  }
+
   // Doubled edges: a paired ring whose two pairs are one sheet here and in the next cell along
   // its axis; each pair seeds a point.
   template <typename LabelAt>
@@ -493,44 +637,14 @@ private:
     return {point(f, in), point(f, out)};
   }
 
-  // Whether each label's faces that have two points as their corner pair up: two on each such
-  // segment, so that its surface stays closed across the segment.
-  bool ridges_closed() const
-  {
-    for(int f = 0; f < 12; ++f)
-    {
-      if(!m_nodes.active(f))
-        continue;
-      const int p = m_point[std::size_t(3 * f)], q = m_point[std::size_t(3 * f + 1)];
-      if(p == q)
-        continue;
-      for(int side = 0; side < 2; ++side)
-      {
-        const Label l = m_nodes.label(voxel_of_face(f, side));
-        int count = 0;
-        for(int g = 0; g < 12; ++g)
-        {
-          if(!m_nodes.active(g))
-            continue;
-          const int r = m_point[std::size_t(3 * g)], t = m_point[std::size_t(3 * g + 1)];
-          count += ((r == p && t == q) || (r == q && t == p)) &&
-                   (m_nodes.label(voxel_of_face(g, 0)) == l || m_nodes.label(voxel_of_face(g, 1)) == l);
-        }
-        if(count != 2)
-          return false;
-      }
-    }
-    return true;
-  }
-
   // Whether each label's surface stays closed across the segments where a face's corner is two
-  // points: two of its faces on each segment, or else, where the faces on segments are all of one
+  // points: two of its faces or bridges on each segment, or else, where the faces on segments are all of one
   // interface, the holes they leave (the segments each used once) capped by triangles of that
   // interface fanned around each loop.
   bool close_ridges()
   {
     m_caps.clear();
-    if(ridges_closed())
+    if(surfaces_closed())
       return true;
     std::vector<std::array<int, 2> > once; // directed from the smaller label into the larger
     bool one_interface = true;
@@ -703,6 +817,9 @@ private:
         m_point[std::size_t(3 * f + side)] = n;
       }
     }
+    for(Bridge& bridge : m_bridges)
+      for(std::size_t pair = 0; pair < 2; ++pair)
+        bridge.points[pair] = point(bridge.faces[pair], bridge.axis);
   }
 
   // A box along each axis: the quarters [first, last) of the cell it spans.
@@ -760,8 +877,8 @@ private:
         if(cut_apart(range[x], range[y], centroid[x], centroid[y], true) ||
            cut_apart(range[x], range[y], centroid[x], centroid[y], false))
           continue;
-        // Merged, the points of a cap could coincide and leave its hole open.
-        if(!m_caps.empty())
+        // Merged, the points of a cap or a bridge could coincide and leave its hole open.
+        if(!m_caps.empty() || !m_bridges.empty())
           return false;
         merge(int(x), int(y));
         return make_boxes(margin);
@@ -867,6 +984,7 @@ private:
   std::array<int, 36> m_point;
   std::vector<std::array<double, 3> > m_low, m_high;
   std::vector<Cap> m_caps;
+  std::vector<Bridge> m_bridges;
   int m_first_junction = none; // the points from here on are apexes of caps, no corners of faces
 };
 
