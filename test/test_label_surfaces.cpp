@@ -32,6 +32,7 @@
 
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_maps/Dual_cell.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -432,18 +433,42 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
 // two such cells share a ring of four labels, which only the first of them may split. Before the
 // rings were split and bridged, one label of each such cell was left touching itself, and
 // label_surface() split it there. Checked: every label's surface is a manifold as the nets make
-// it and does not intersect itself, besides the checks of every map.
+// it and does not intersect itself, besides the checks of every map; and on the first cell
+// alone, a bridge per split ring, no split of a ring the cell before has split, and with every
+// ring kept whole, no bridge and the fallback's ridge (one label left whole, the other parted).
 void check_bridged_cells()
 {
-  for(const char* cell : {"1111222122212221222122312111111144442444432543354444444444443334",
-                          "1222222222222223123022333455435543333545334333355554334533353335",
-                          "1111011000002200330044204520455533353355334566453335334733376664"})
-    check(generated({4, 4, 4}, {1, 1, 1}, [cell](long i, long j, long k) { return Label(cell[16 * i + 4 * j + k] - '0'); }),
+  const std::array<const char*, 3> cells = {"1111222122212221222122312111111144442444432543354444444444443334",
+                                            "1222222222222223123022333455435543333545334333355554334533353335",
+                                            "1111011000002200330044204520455533353355334566453335334733376664"};
+  for(const char* cell : cells)
+    check(generated({4, 4, 4}, {1, 1, 1},
+                    [cell](long i, long j, long k) { return Label(cell[16 * i + 4 * j + k] - '0'); }),
           0, true);
   const std::string shared = "13304424210130411302331332243020113044134231001013001030431010010442440124002320443401"
                              "122343142433033041412232023243303203010";
-  check(generated({5, 5, 5}, {1, 1, 1}, [&shared](long i, long j, long k) { return Label(shared[std::size_t(25 * i + 5 * j + k)] - '0'); }),
+  check(generated({5, 5, 5}, {1, 1, 1},
+                  [&shared](long i, long j, long k) { return Label(shared[std::size_t(25 * i + 5 * j + k)] - '0'); }),
         0, true);
+
+  // The cell's block is voxels 1 and 2 of the 4 along each axis.
+  const auto label = [&cells](int d0, int d1, int d2) {
+    const int i = d0 + 1, j = d1 + 1, k = d2 + 1;
+    return i < 0 || j < 0 || k < 0 || i > 3 || j > 3 || k > 3 ? Label(0) : Label(cells[0][16 * i + 4 * j + k] - '0');
+  };
+  using Cell = PMP::internal::Constrained_fairing::Dual_cell<Label>;
+  const Cell bridged(label, 0, PMP::label_box_margin);
+  const unsigned split = bridged.split_rings();
+  std::size_t rings = 0;
+  for(unsigned r = split; r != 0; r &= r - 1)
+    ++rings;
+  CHECK(!bridged.bridges().empty() && bridged.bridges().size() == rings);
+  const Cell after(label, 0, PMP::label_box_margin, split);
+  CHECK((after.split_rings() & split) == 0u);
+  const Cell whole(label, 0, PMP::label_box_margin, 0x3fu);
+  CHECK(whole.bridges().empty() && whole.size() > 1);
+  std::cout << "  natbrainlab's cell: " << bridged.bridges().size() << " bridges, " << bridged.size()
+            << " points; with every ring whole, " << whole.size() << " points\n";
 }
 
 // label_surface_nets() appending to a soup already there (a tangled block of an atlas, so that

@@ -125,13 +125,16 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   };
   // Dual cell c = (ci, cj, ck), each in [0, n], lies between voxels c - 1 and c on each axis.
   const std::size_t cells[3] = {size[0] + 1, size[1] + 1, size[2] + 1};
+  const auto cell_index = [&cells](const Signed c[3]) {
+    return (std::size_t(c[0]) * cells[1] + std::size_t(c[1])) * cells[2] + std::size_t(c[2]);
+  };
   // The cells that split rings, in their order, with the rings they split: the cell after one
   // along a split ring's axis leaves that ring whole, so that the bridge ends at its point.
   std::vector<std::pair<std::size_t, unsigned> > split_rings;
   const auto cell_at = [&](const Signed c[3]) {
     unsigned unsplit = 0;
     const std::size_t stride[3] = {cells[1] * cells[2], cells[2], 1};
-    const std::size_t index = (std::size_t(c[0]) * cells[1] + std::size_t(c[1])) * cells[2] + std::size_t(c[2]);
+    const std::size_t index = cell_index(c);
     for(int a = 0; a < 3; ++a)
       if(c[a] > 0)
       {
@@ -289,7 +292,7 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
             q[axis] = b[axis];
             q[u] = a[u] + du[k];
             q[w] = a[w] + dw[k];
-            const std::size_t index = (std::size_t(q[0]) * cells[1] + std::size_t(q[1])) * cells[2] + std::size_t(q[2]);
+            const std::size_t index = cell_index(q);
             const std::size_t base = first + first_point[index];
             const std::array<std::int8_t, 24>* corners = corners_of(index);
             if(!corners)
@@ -334,38 +337,28 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     face_labels.push_back(cap.second);
   }
   // Each bridge: the triangle of its cell's two points and the point of the next cell along the
-  // ring's half-axis, where the ring's faces meet (that cell leaves the ring whole), turned so
-  // that its normal points from the region of its first label into its second's.
+  // ring's half-axis, where the ring's faces meet (that cell leaves the ring whole). Its normal
+  // points from the ring's voxel k into voxel k + 2 (the bridge's labels, in order) when the next
+  // cell is on the positive side, and the other way on the negative side: the ring runs
+  // counterclockwise around the axis, the points of the pairs around voxels k + 1 and k + 3.
   for(const auto& [at, bridge] : bridges)
   {
     Signed next[3] = {at[0], at[1], at[2]};
     next[bridge.axis] += bridge.side == 1 ? 1 : -1;
-    const std::size_t index = (std::size_t(next[0]) * cells[1] + std::size_t(next[1])) * cells[2] + std::size_t(next[2]);
-    const std::size_t here = first + first_point[(std::size_t(at[0]) * cells[1] + std::size_t(at[1])) * cells[2] +
-                                                 std::size_t(at[2])];
+    const std::size_t here = first + first_point[cell_index(at.data())], index = cell_index(next);
     // The next cell's corner of a face of the ring: in its block, the face's voxels are on the
     // other side along the ring's axis.
     std::size_t there = first + first_point[index];
     if(const std::array<std::int8_t, 24>* corners = corners_of(index))
     {
-      const int f = bridge.faces[0], along_u = bridge.axis == (f / 4 + 1) % 3;
+      const int f = bridge.faces[0];
+      const bool along_u = bridge.axis == (f / 4 + 1) % 3;
       there += std::size_t((*corners)[std::size_t(2 * (f ^ (along_u ? 1 : 2)) + (along_u ? 0 : 1))]);
     }
-    std::array<std::size_t, 3> t = {here + std::size_t(bridge.points[0]), here + std::size_t(bridge.points[1]), there};
-    std::array<Epick::Point_3, 2> centre;
-    for(std::size_t v = 0; v < 2; ++v)
-    {
-      double x[3];
-      for(int a = 0; a < 3; ++a)
-        x[a] = origin[std::size_t(a)] + double(at[a] - 1 + ((bridge.voxels[v] >> a) & 1)) * spacing[std::size_t(a)];
-      centre[v] = Epick::Point_3(x[0], x[1], x[2]);
-    }
-    const CGAL::Orientation second = CGAL::orientation(point_of(t[0]), point_of(t[1]), point_of(t[2]), centre[1]);
-    if(second == CGAL::NEGATIVE ||
-       (second == CGAL::COPLANAR &&
-        CGAL::orientation(point_of(t[0]), point_of(t[1]), point_of(t[2]), centre[0]) == CGAL::POSITIVE))
-      std::swap(t[0], t[1]);
-    triangles.push_back({Point_index(t[0]), Point_index(t[1]), Point_index(t[2])});
+    std::array<std::size_t, 2> pair = {here + std::size_t(bridge.points[0]), here + std::size_t(bridge.points[1])};
+    if(bridge.side == 0)
+      std::swap(pair[0], pair[1]);
+    triangles.push_back({Point_index(pair[0]), Point_index(pair[1]), Point_index(there)});
     face_labels.push_back(bridge.labels);
   }
 
@@ -379,7 +372,8 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
     bool moved = false;
     for(std::size_t t = first_triangle; t < triangles.size(); ++t)
     {
-      const std::array<Epick::Point_3, 3> p = {point_of(std::size_t(triangles[t][0])), point_of(std::size_t(triangles[t][1])),
+      const std::array<Epick::Point_3, 3> p = {point_of(std::size_t(triangles[t][0])),
+                                               point_of(std::size_t(triangles[t][1])),
                                                point_of(std::size_t(triangles[t][2]))};
       if(!CGAL::collinear(p[0], p[1], p[2]))
         continue;

@@ -373,11 +373,10 @@ public:
   // the ring's half-axis, between the labels of the two voxels that meet in the gap.
   struct Bridge
   {
-    int axis, side;             // the ring's half-axis: side 1 towards the next cell along `axis`
-    std::array<int, 2> points;  // the points of the faces around the ring's voxels k + 1 and k + 3
-    std::array<int, 2> faces;   // a face of each pair
-    std::array<int, 2> voxels;  // the ring's voxels k and k + 2
-    std::array<Label, 2> labels;
+    int axis, side;              // the ring's half-axis: side 1 towards the next cell along `axis`
+    std::array<int, 2> points;   // the points of the faces around the ring's voxels k + 1 and k + 3
+    std::array<int, 2> faces;    // a face of each pair
+    std::array<Label, 2> labels; // of the ring's voxels k and k + 2
   };
   const std::vector<Bridge>& bridges() const { return m_bridges; }
   // Bit r set where ring r is split.
@@ -397,7 +396,7 @@ private:
   // around one diagonal's voxels at two nodes, the other diagonal's labels meeting in the gap and
   // parted by a bridge. Of the choices (each ring left whole or split along either diagonal), the
   // first with the fewest splits that unties the seeds, closes every label's surface across the
-  // cell's segments and makes the boxes; false, and the cell as it was, where none does.
+  // cell's segments and makes the boxes; false, the rings whole, where none does.
   template <typename LabelAt>
   bool place_with_bridges(const LabelAt& label, double margin, unsigned unsplit_rings)
   {
@@ -406,7 +405,10 @@ private:
     int choices = 1;
     for(int ring = 0; ring < 6; ++ring)
       if(whole.four_labels(ring) && !(unsplit_rings & (1u << ring)))
-        rings.push_back(ring), choices *= 3;
+      {
+        rings.push_back(ring);
+        choices *= 3;
+      }
     for(int splits = 1; splits <= int(rings.size()); ++splits)
       for(int choice = 0; choice < choices; ++choice)
       {
@@ -417,6 +419,8 @@ private:
           continue;
         m_nodes = whole;
         m_bridges.clear();
+        m_caps.clear();
+        m_first_junction = none;
         int c = choice;
         for(const int ring : rings)
         {
@@ -427,9 +431,8 @@ private:
           m_nodes.split(ring, k);
           const std::array<int, 4>& faces = m_nodes.ring_faces(ring);
           const std::array<int, 4>& voxels = m_nodes.ring_voxels(ring);
-          const int v0 = voxels[std::size_t(k)], v2 = voxels[std::size_t(k + 2)];
           m_bridges.push_back({ring / 2, ring % 2, {none, none}, {faces[std::size_t(k)], faces[std::size_t(k + 2)]},
-                               {v0, v2}, {m_nodes.label(v0), m_nodes.label(v2)}});
+                               {m_nodes.label(voxels[std::size_t(k)]), m_nodes.label(voxels[std::size_t(k + 2)])}});
         }
         const std::array<int, 12> sheet = m_nodes.sheets();
         Dual_cell_seeds seeds;
@@ -638,9 +641,10 @@ private:
   }
 
   // Whether each label's surface stays closed across the segments where a face's corner is two
-  // points: two of its faces or bridges on each segment, or else, where the faces on segments are all of one
-  // interface, the holes they leave (the segments each used once) capped by triangles of that
-  // interface fanned around each loop.
+  // points: two of its faces or bridges on each segment, or else, where the faces on segments are
+  // all of one interface, the holes the faces leave (the segments each used once) capped by
+  // triangles of that interface fanned around each loop. The caps follow the faces only, so a
+  // cell with bridges that needs caps does not close (place_with_bridges() checks again).
   bool close_ridges()
   {
     m_caps.clear();
