@@ -128,20 +128,21 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   const auto cell_index = [&cells](const Signed c[3]) {
     return (std::size_t(c[0]) * cells[1] + std::size_t(c[1])) * cells[2] + std::size_t(c[2]);
   };
-  // The cells that split rings, in their order, with the rings they split: the cell after one
-  // along a split ring's axis leaves that ring whole, so that the bridge ends at its point.
-  std::vector<std::pair<std::size_t, unsigned> > split_rings;
+  // The bridges (Dual_cell.h), in the order of their cells: the cell after one along a split
+  // ring's axis leaves that ring whole, so that the bridge ends at its point.
+  std::vector<std::pair<std::array<Signed, 3>, typename Cell::Bridge> > bridges; // cell, bridge
   const auto cell_at = [&](const Signed c[3]) {
     unsigned unsplit = 0;
-    const std::size_t stride[3] = {cells[1] * cells[2], cells[2], 1};
-    const std::size_t index = cell_index(c);
     for(int a = 0; a < 3; ++a)
       if(c[a] > 0)
       {
-        const auto before = std::lower_bound(split_rings.begin(), split_rings.end(), index - stride[a],
-                                             [](const auto& x, std::size_t i) { return x.first < i; });
-        if(before != split_rings.end() && before->first == index - stride[a] && (before->second & (1u << (2 * a + 1))))
-          unsplit |= 1u << (2 * a);
+        std::array<Signed, 3> before = {c[0], c[1], c[2]};
+        --before[std::size_t(a)];
+        for(auto b = std::lower_bound(bridges.begin(), bridges.end(), before,
+                                      [](const auto& x, const std::array<Signed, 3>& at) { return x.first < at; });
+            b != bridges.end() && b->first == before; ++b)
+          if(b->second.axis == a && b->second.side == 1)
+            unsplit |= 1u << (2 * a);
       }
     return Cell([&](int d0, int d1, int d2) { return label(c[0] - 1 + d0, c[1] - 1 + d1, c[2] - 1 + d2); }, background,
                 margin, unsplit);
@@ -153,7 +154,6 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   std::vector<std::uint32_t> first_point(cells[0] * cells[1] * cells[2], none);
   std::vector<std::pair<std::size_t, std::array<std::int8_t, 24> > > split;
   std::vector<std::pair<std::array<std::size_t, 3>, std::array<Label, 2> > > caps; // points, labels
-  std::vector<std::pair<std::array<Signed, 3>, typename Cell::Bridge> > bridges; // cell, bridge
   std::vector<bool> of_split_cell;
   const std::size_t first = points.size(), first_triangle = triangles.size(), first_box = box_half_extents.size();
   std::size_t cell = 0;
@@ -184,8 +184,6 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
           }
           for(const auto& bridge : dual.bridges())
             bridges.push_back({{c[0], c[1], c[2]}, bridge});
-          if(dual.split_rings() != 0)
-            split_rings.emplace_back(cell, dual.split_rings());
         }
         for(int s = 0; s < dual.size(); ++s)
         {
