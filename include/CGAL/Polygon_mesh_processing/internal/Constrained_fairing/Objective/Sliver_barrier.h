@@ -106,8 +106,14 @@ public:
                       unsigned corners, Points& G, Stiffness_and_reach* scales) const
   {
     double q;
-    if(!is_sliver(f, p, q))
-      return 0;
+    return is_sliver(f, p, q) ? add_sliver_gradient(q, v, p, corners, G, scales) : 0;
+  }
+
+private:
+  // The gradient of a sliver of quality q, apart from the test, which then inlines in the tiles.
+  double add_sliver_gradient(double q, const std::array<Index, 3>& v, const std::array<Eigen::Vector3d, 3>& p,
+                             unsigned corners, Points& G, Stiffness_and_reach* scales) const
+  {
     const double shifted = q + m_threshold / 100, r = m_threshold / shifted;
     const double outer = 2 * m_weight * (r - 1), inner = -r / shifted;
     const Eigen::Vector3d N = (p[1] - p[0]).cross(p[2] - p[0]);
@@ -129,7 +135,6 @@ public:
     return term(q);
   }
 
-private:
   std::array<Eigen::Vector3d, 3> corners(const Points& P, std::size_t f) const
   {
     const auto& t = m_mesh.triangles[f];
