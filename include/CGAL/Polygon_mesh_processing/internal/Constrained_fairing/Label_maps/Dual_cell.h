@@ -379,14 +379,6 @@ public:
     std::array<Label, 2> labels; // of the ring's voxels k and k + 2
   };
   const std::vector<Bridge>& bridges() const { return m_bridges; }
-  // Bit r set where ring r is split.
-  unsigned split_rings() const
-  {
-    unsigned rings = 0;
-    for(const Bridge& bridge : m_bridges)
-      rings |= 1u << (2 * bridge.axis + bridge.side);
-    return rings;
-  }
   // Point p's box, relative to the cell's centre in spacings along axis c.
   double low(int p, int c) const { return m_low[std::size_t(p)][std::size_t(c)]; }
   double high(int p, int c) const { return m_high[std::size_t(p)][std::size_t(c)]; }
