@@ -415,6 +415,18 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
                                  return Label(inia19_block[std::size_t(36 * i + 6 * j + k)] - '0');
                                }),
                      true);
+  // A block of inia19 (labels 1 to 17 as '1' to 'A', 0 its background) with two faces that no
+  // ears of opposite cells alone cut, along one junction line of three labels: the polygon's
+  // first ear, taken for each, laid a triangle on three points of that line, and the two folded
+  // onto each other (label 12's surface crossed itself).
+  const std::string junction_block = "1111231111245111446644445444444447781111121111121551145664445644449:;;<733111131111"
+                                     "1115514=>664499<<44<<;;<<?33111333111331564@99<9<9<<<<<<<<;<<??3311????11???996@9"
+                                     "<<<<0<<<<<<<<<<<A???31?????1A0?99<A0<<<<@<<<<<<<<<<<";
+  cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
+                               [&junction_block](long i, long j, long k) {
+                                 return Label(junction_block[std::size_t(36 * i + 6 * j + k)] - '0');
+                               }),
+                     true);
   std::mt19937 random(7);
   for(int labels : {2, 3, 5})
     for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})
