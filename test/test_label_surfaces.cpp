@@ -8,7 +8,8 @@
 // labels, one-voxel tubes along every diagonal, tilted one-voxel sheets, a label that meets itself
 // around an edge, cells of real segmentations that need a junction point, quarter boxes or rings
 // split where two labels are pinched, blocks of them whose points need untangling or whose faces'
-// polygons need a search for their ears, random voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
+// polygons need a search for their ears or, along a junction line, the least folded cut, random
+// voxels; cubic voxels and 1 x 1 x 3 ones. Checked:
 //  - every point's box lies in its dual cell, `label_box_margin` of the spacing from its sides,
 //    and no two boxes meet; a point off its cell's centre has a box smaller than the cell's;
 //  - each triangle separates its two labels with its normal from the first into the second (a
