@@ -31,10 +31,11 @@ namespace internal {
 namespace Constrained_fairing {
 
 // A side of a triangle of a multi-label surface: the edge (a < b), its interface, the triangle
-// and whether it runs from a to b once oriented from the smaller label into the larger.
+// and whether it runs from a to b once oriented from the smaller label into the larger. In
+// 32 bits (the check bounds the points and triangles first): the sort moves half the bytes.
 struct Interface_side
 {
-  std::size_t a, b, interface, face;
+  Index a, b, interface, face;
   bool forward;
 
   bool same_edge(const Interface_side& o) const { return a == o.a && b == o.b; }
@@ -53,7 +54,8 @@ std::vector<Interface_side> interface_sides(std::size_t n, const TriangleRange& 
     for(std::size_t c = 0; c < 3; ++c)
     {
       const std::size_t s = std::size_t(triangles[f][c]), t = std::size_t(triangles[f][(c + 1) % 3]);
-      sides.push_back({(std::min)(s, t), (std::max)(s, t), interface_of[f], f, (s < t) != flipped[f]});
+      sides.push_back({Index((std::min)(s, t)), Index((std::max)(s, t)), Index(interface_of[f]), Index(f),
+                       (s < t) != flipped[f]});
     }
   sort_by_vertex(sides, n, [](const Interface_side& x) { return x.a; }, [](const Interface_side& x, const Interface_side& y) {
     return x.b != y.b ? x.b < y.b : x.interface != y.interface ? x.interface < y.interface : x.face < y.face;
@@ -83,21 +85,29 @@ Input_error interface_error(std::size_t n, const TriangleRange& triangles, const
   if(n > (std::numeric_limits<Index>::max)() || m > Hinge_mesh::max_faces)
     return mesh_too_large_error((std::numeric_limits<Index>::max)(), Hinge_mesh::max_faces);
 
-  // The interfaces, numbered in the order of their pairs of labels.
-  std::vector<std::size_t> order(m);
-  for(std::size_t f = 0; f < m; ++f)
-    order[f] = f;
+  // The interfaces, numbered in the order of their pairs of labels: the few distinct pairs
+  // collected, then each triangle's looked up (neighbouring triangles mostly share theirs).
   const auto pair = [&](std::size_t f) {
     const auto& l = face_labels[f];
     return l[0] < l[1] ? std::make_pair(l[0], l[1]) : std::make_pair(l[1], l[0]);
   };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t f, std::size_t g) { return pair(f) < pair(g); });
+  using Pair = decltype(pair(0));
+  std::vector<Pair> pairs;
+  for(std::size_t f = 0; f < m; ++f)
+    if(f == 0 || pair(f) != pair(f - 1))
+    {
+      const auto at = std::lower_bound(pairs.begin(), pairs.end(), pair(f));
+      if(at == pairs.end() || *at != pair(f))
+        pairs.insert(at, pair(f));
+    }
   interface_of.assign(m, 0);
   flipped.assign(m, false);
-  for(std::size_t r = 0; r < m; ++r)
+  for(std::size_t f = 0; f < m; ++f)
   {
-    interface_of[order[r]] = r == 0 ? 0 : interface_of[order[r - 1]] + (pair(order[r]) != pair(order[r - 1]));
-    flipped[order[r]] = face_labels[order[r]][1] < face_labels[order[r]][0];
+    interface_of[f] = f > 0 && pair(f) == pair(f - 1)
+                        ? interface_of[f - 1]
+                        : std::size_t(std::lower_bound(pairs.begin(), pairs.end(), pair(f)) - pairs.begin());
+    flipped[f] = face_labels[f][1] < face_labels[f][0];
   }
 
   sides = interface_sides(n, triangles, interface_of, flipped);

@@ -45,6 +45,7 @@
 #include <cmath>
 #include <cstddef>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -92,19 +93,24 @@ public:
       length += (b - a).norm() + (c - b).norm() + (a - c).norm();
     }
     const double h = length / double(3 * m_triangles.size());
-    // Each label's points, each counted once.
-    std::vector<std::pair<Index, Index> > label_points;
-    for(const Triangle& t : m_triangles)
-      for(Index s : t.sides)
-        if(s != none)
-          for(Index v : t.v)
-            label_points.emplace_back(s, v);
-    sort_by_vertex(label_points, std::size_t(X0.rows()), [](const auto& lp) { return lp.second; },
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-    label_points.erase(std::unique(label_points.begin(), label_points.end()), label_points.end());
+    // Each label's points, each counted once: the labels at each point, without repeats.
+    const Rows_by_vertex<Index> labels_at(std::size_t(X0.rows()), [&](const auto& add) {
+      for(const Triangle& t : m_triangles)
+        for(Index s : t.sides)
+          if(s != none)
+            for(Index v : t.v)
+              add(v, s);
+    });
     std::vector<double> points(L, 0.);
-    for(const auto& lp : label_points)
-      ++points[lp.first];
+    std::vector<Index> row;
+    for(std::size_t v = 0; v < std::size_t(X0.rows()); ++v)
+    {
+      row.assign(labels_at.begin(v), labels_at.end(v));
+      std::sort(row.begin(), row.end());
+      row.erase(std::unique(row.begin(), row.end()), row.end());
+      for(Index s : row)
+        ++points[s];
+    }
     m_weight.resize(L);
     for(std::size_t l = 0; l < L; ++l)
       m_weight[l] = area[l] > 0 ? weight * points[l] / (area[l] * h * area[l] * h) : 0;
@@ -295,33 +301,53 @@ private:
   };
 
   // A label's surface is closed if each of its edges is run through as often one way as the
-  // other by its triangles, turned to face out of the label.
+  // other by its triangles, turned to face out of the label: a triangle's side from a to b counts
+  // +1 for the triangle's first label and -1 for its second where a < b, the other way round
+  // where a > b, summed per edge and label.
   static std::vector<bool> closed_labels(const std::vector<std::array<Index, 3> >& triangles,
                                          const std::vector<std::array<Index, 2> >& sides, Index labels,
                                          std::size_t number_of_points)
   {
-    std::vector<std::tuple<Index, Index, Index, int> > edges; // smaller and larger end, label, way
-    edges.reserve(6 * triangles.size());
-    for(std::size_t f = 0; f < triangles.size(); ++f)
-      for(int j = 0; j < 2; ++j)
+    struct Side // of an edge (a, b), a < b, in a's row
+    {
+      Index b;
+      std::array<Index, 2> labels;
+      int way;
+    };
+    const Rows_by_vertex<Side> edges(number_of_points, [&](const auto& add) {
+      for(std::size_t f = 0; f < triangles.size(); ++f)
         for(std::size_t k = 0; k < 3; ++k)
         {
           const Index a = triangles[f][k], b = triangles[f][(k + 1) % 3];
-          const int way = (a < b) == (j == 0) ? 1 : -1;
-          edges.emplace_back((std::min)(a, b), (std::max)(a, b), sides[f][std::size_t(j)], way);
+          add((std::min)(a, b), Side{(std::max)(a, b), sides[f], a < b ? 1 : -1});
         }
-    sort_by_vertex(edges, number_of_points, [](const auto& e) { return std::get<0>(e); },
-                   [](const auto& a, const auto& b) { return a < b; });
+    });
     std::vector<bool> closed(labels, true);
-    for(std::size_t i = 0, j = 0; i < edges.size(); i = j)
+    std::vector<Side> row;
+    std::vector<std::pair<Index, int> > balance; // of each label on one edge
+    for(std::size_t a = 0; a < number_of_points; ++a)
     {
-      int balance = 0;
-      for(j = i; j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
-                 std::get<1>(edges[j]) == std::get<1>(edges[i]) && std::get<2>(edges[j]) == std::get<2>(edges[i]);
-          ++j)
-        balance += std::get<3>(edges[j]);
-      if(balance != 0)
-        closed[std::get<2>(edges[i])] = false;
+      row.assign(edges.begin(a), edges.end(a));
+      std::sort(row.begin(), row.end(), [](const Side& x, const Side& y) { return x.b < y.b; });
+      for(std::size_t i = 0, j = 0; i < row.size(); i = j)
+      {
+        balance.clear();
+        const auto add = [&balance](Index label, int way) {
+          const auto found = std::find_if(balance.begin(), balance.end(), [label](const auto& x) { return x.first == label; });
+          if(found == balance.end())
+            balance.emplace_back(label, way);
+          else
+            found->second += way;
+        };
+        for(j = i; j < row.size() && row[j].b == row[i].b; ++j)
+        {
+          add(row[j].labels[0], row[j].way);
+          add(row[j].labels[1], -row[j].way);
+        }
+        for(const auto& [label, sum] : balance)
+          if(sum != 0)
+            closed[label] = false;
+      }
     }
     return closed;
   }
