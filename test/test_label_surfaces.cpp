@@ -400,33 +400,28 @@ std::vector<std::pair<Label_map, bool> > worst_cases()
     cases.emplace_back(generated({4, 4, 4}, {1, 1, 1},
                                  [cell](long i, long j, long k) { return Label(cell[16 * i + 4 * j + k] - '0'); }),
                        true);
+  // Blocks of 6 x 6 x 6 voxels, each label written as the character '0' + label.
+  const auto block_map = [](const std::string& block) {
+    return generated({6, 6, 6}, {1, 1, 1},
+                     [&block](long i, long j, long k) { return Label(block[std::size_t(36 * i + 6 * j + k)] - '0'); });
+  };
   for(const std::string& block : tangled_blocks())
-    cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
-                                 [&block](long i, long j, long k) { return Label(block[std::size_t(36 * i + 6 * j + k)] - '0'); }),
-                       true);
+    cases.emplace_back(block_map(block), true);
   // A block of inia19 (labels 1 to 16 as '1' to '@') with a face whose polygon, a corner of two
   // points next to a corner of one, a greedy cut of ears left with no ear of opposite cells: it
   // cut a triangle two faces of one label shared, and label_surface() split the label there.
-  const std::string inia19_block = "122222112222311222311144335555635555227777122227812222339122"
-                                   "335522:33552229999829997882927382922:38922:33992827;;;822;;9"
-                                   "88<799:88<99:=82<9::389<=87;;;=88:;;:8877;:=822;::=82;::3882"
-                                   ":>8?;;:>88;;::@87;::@82;::@88;:::@88";
-  cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
-                               [&inia19_block](long i, long j, long k) {
-                                 return Label(inia19_block[std::size_t(36 * i + 6 * j + k)] - '0');
-                               }),
+  cases.emplace_back(block_map("122222112222311222311144335555635555227777122227812222339122"
+                               "335522:33552229999829997882927382922:38922:33992827;;;822;;9"
+                               "88<799:88<99:=82<9::389<=87;;;=88:;;:8877;:=822;::=82;::3882"
+                               ":>8?;;:>88;;::@87;::@82;::@88;:::@88"),
                      true);
   // A block of inia19 (labels 1 to 17 as '1' to 'A', 0 its background) with two faces that no
   // ears of opposite cells alone cut, along one junction line of three labels: the polygon's
   // first ear, taken for each, laid a triangle on three points of that line, and the two folded
   // onto each other (label 12's surface crossed itself).
-  const std::string junction_block = "1111231111245111446644445444444447781111121111121551145664445644449:;;<733111131111"
-                                     "1115514=>664499<<44<<;;<<?33111333111331564@99<9<9<<<<<<<<;<<??3311????11???996@9"
-                                     "<<<<0<<<<<<<<<<<A???31?????1A0?99<A0<<<<@<<<<<<<<<<<";
-  cases.emplace_back(generated({6, 6, 6}, {1, 1, 1},
-                               [&junction_block](long i, long j, long k) {
-                                 return Label(junction_block[std::size_t(36 * i + 6 * j + k)] - '0');
-                               }),
+  cases.emplace_back(block_map("1111231111245111446644445444444447781111121111121551145664445644449:;;<733111131111"
+                               "1115514=>664499<<44<<;;<<?33111333111331564@99<9<9<<<<<<<<;<<??3311????11???996@9"
+                               "<<<<0<<<<<<<<<<<A???31?????1A0?99<A0<<<<@<<<<<<<<<<<"),
                      true);
   std::mt19937 random(7);
   for(int labels : {2, 3, 5})

@@ -85,8 +85,9 @@ Input_error interface_error(std::size_t n, const TriangleRange& triangles, const
   if(n > (std::numeric_limits<Index>::max)() || m > Hinge_mesh::max_faces)
     return mesh_too_large_error((std::numeric_limits<Index>::max)(), Hinge_mesh::max_faces);
 
-  // The interfaces, numbered in the order of their pairs of labels: the few distinct pairs
-  // collected, then each triangle's looked up (neighbouring triangles mostly share theirs).
+  // The interfaces, numbered in the order of their pairs of labels: the pairs of the runs of
+  // neighbouring triangles that share theirs (most do) sorted without repeats, then each
+  // triangle's looked up.
   const auto pair = [&](std::size_t f) {
     const auto& l = face_labels[f];
     return l[0] < l[1] ? std::make_pair(l[0], l[1]) : std::make_pair(l[1], l[0]);
@@ -95,11 +96,9 @@ Input_error interface_error(std::size_t n, const TriangleRange& triangles, const
   std::vector<Pair> pairs;
   for(std::size_t f = 0; f < m; ++f)
     if(f == 0 || pair(f) != pair(f - 1))
-    {
-      const auto at = std::lower_bound(pairs.begin(), pairs.end(), pair(f));
-      if(at == pairs.end() || *at != pair(f))
-        pairs.insert(at, pair(f));
-    }
+      pairs.push_back(pair(f));
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   interface_of.assign(m, 0);
   flipped.assign(m, false);
   for(std::size_t f = 0; f < m; ++f)

@@ -44,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -94,23 +95,19 @@ public:
     }
     const double h = length / double(3 * m_triangles.size());
     // Each label's points, each counted once: the labels at each point, without repeats.
-    const Rows_by_vertex<Index> labels_at(std::size_t(X0.rows()), [&](const auto& add) {
+    Rows_by_vertex<Index> labels_at(std::size_t(X0.rows()), [&](const auto& add) {
       for(const Triangle& t : m_triangles)
         for(Index s : t.sides)
           if(s != none)
             for(Index v : t.v)
               add(v, s);
     });
+    labels_at.sort_rows(std::less<Index>());
     std::vector<double> points(L, 0.);
-    std::vector<Index> row;
     for(std::size_t v = 0; v < std::size_t(X0.rows()); ++v)
-    {
-      row.assign(labels_at.begin(v), labels_at.end(v));
-      std::sort(row.begin(), row.end());
-      row.erase(std::unique(row.begin(), row.end()), row.end());
-      for(Index s : row)
-        ++points[s];
-    }
+      for(auto s = labels_at.begin(v); s != labels_at.end(v); ++s)
+        if(s == labels_at.begin(v) || *s != *(s - 1))
+          ++points[*s];
     m_weight.resize(L);
     for(std::size_t l = 0; l < L; ++l)
       m_weight[l] = area[l] > 0 ? weight * points[l] / (area[l] * h * area[l] * h) : 0;
@@ -314,7 +311,7 @@ private:
       std::array<Index, 2> labels;
       int way;
     };
-    const Rows_by_vertex<Side> edges(number_of_points, [&](const auto& add) {
+    Rows_by_vertex<Side> edges(number_of_points, [&](const auto& add) {
       for(std::size_t f = 0; f < triangles.size(); ++f)
         for(std::size_t k = 0; k < 3; ++k)
         {
@@ -322,33 +319,30 @@ private:
           add((std::min)(a, b), Side{(std::max)(a, b), sides[f], a < b ? 1 : -1});
         }
     });
+    edges.sort_rows([](const Side& x, const Side& y) { return x.b < y.b; });
     std::vector<bool> closed(labels, true);
-    std::vector<Side> row;
     std::vector<std::pair<Index, int> > balance; // of each label on one edge
+    const auto add = [&balance](Index label, int way) {
+      const auto found =
+        std::find_if(balance.begin(), balance.end(), [label](const auto& x) { return x.first == label; });
+      if(found == balance.end())
+        balance.emplace_back(label, way);
+      else
+        found->second += way;
+    };
     for(std::size_t a = 0; a < number_of_points; ++a)
-    {
-      row.assign(edges.begin(a), edges.end(a));
-      std::sort(row.begin(), row.end(), [](const Side& x, const Side& y) { return x.b < y.b; });
-      for(std::size_t i = 0, j = 0; i < row.size(); i = j)
+      for(auto i = edges.begin(a), j = i; i != edges.end(a); i = j)
       {
         balance.clear();
-        const auto add = [&balance](Index label, int way) {
-          const auto found = std::find_if(balance.begin(), balance.end(), [label](const auto& x) { return x.first == label; });
-          if(found == balance.end())
-            balance.emplace_back(label, way);
-          else
-            found->second += way;
-        };
-        for(j = i; j < row.size() && row[j].b == row[i].b; ++j)
+        for(j = i; j != edges.end(a) && j->b == i->b; ++j)
         {
-          add(row[j].labels[0], row[j].way);
-          add(row[j].labels[1], -row[j].way);
+          add(j->labels[0], j->way);
+          add(j->labels[1], -j->way);
         }
         for(const auto& [label, sum] : balance)
           if(sum != 0)
             closed[label] = false;
       }
-    }
     return closed;
   }
 
