@@ -123,7 +123,8 @@ struct Constrained_fairing_result
   std::size_t number_of_folded_faces = 0;
   /// the folded faces that the fold repair undid: after the descent, the vertices of the folds
   /// and their neighbours are re-seeded and the descent resumes, kept if the objective ends
-  /// lower, and repeated (three rounds at most) while fewer faces are folded
+  /// lower, and repeated (three rounds at most) while each round unfolds at least half of the
+  /// folded faces it started from
   std::size_t number_of_unfolded_faces = 0;
   /// the edges kept as creases: those of `edge_is_constrained_map` and those the detection of
   /// `feature_angle` found; the energy has no hinge across them

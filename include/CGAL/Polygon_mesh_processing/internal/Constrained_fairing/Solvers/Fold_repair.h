@@ -37,6 +37,14 @@ constexpr std::size_t reseed_steps = 10;
 // The rounds of fold repair at most.
 constexpr std::size_t fold_repair_rounds = 3;
 
+// A round is followed by another only if it undid at least this share of the folds it
+// re-seeded. Each round costs about as much as the stopping rule's two windows, whatever the
+// number of folds; after a round that undid less than half, the next undid almost none: 0, 0,
+// 1, 2, 2 and 50 folds, or left up to 12 more, on 3 noisy meshes of CGAL's demo data and the 7
+// atlases of mricron-data that needed it (doc/design_notes.md, "Fold repair and what the
+// callback hears").
+constexpr double fold_repair_share = 0.5;
+
 // The folded triangles of X.
 inline std::vector<Index> folded_triangles(const Hinge_mesh& mesh, const Points& X)
 {
@@ -93,7 +101,7 @@ struct Fold_count
 // reached before it, the callback hears nothing; from there on each iterate is lower than
 // all the path's, so the round is kept and the callback hears it with the path's next
 // numbers. A round that never gets below is dropped, its work counted in the evaluations
-// only; the rounds stop at the first that does not leave fewer folds.
+// only; the rounds stop at the first that does not undo `fold_repair_share` of its folds.
 template <typename Bound, typename Descend, typename Callback>
 Fold_count repair_folds(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving,
                         const Descend& descend, const Solver_options& options, const Callback& callback, Points& X,
@@ -143,9 +151,9 @@ Fold_count repair_folds(const Hinge_mesh& mesh, const Bound& bound, const std::v
       path.status = again.status;
     X.swap(Y);
     std::vector<Index> left_folded = folds(X);
-    const bool fewer = left_folded.size() < folded.size();
+    const bool worth_another = double(left_folded.size()) <= (1 - fold_repair_share) * double(folded.size());
     folded.swap(left_folded);
-    if(failed || !fewer)
+    if(failed || !worth_another)
       break;
   }
   count.after = folded.size();
