@@ -39,9 +39,9 @@ constexpr std::size_t fold_repair_rounds = 3;
 
 // A round is followed by another only if it undid at least this share of the folds it
 // re-seeded. Each round costs about as much as the stopping rule's two windows, whatever the
-// number of folds; after a round that undid less than half, the next undid almost none: 0, 0,
-// 1, 2, 2 and 50 folds, or left up to 12 more, on 3 noisy meshes of CGAL's demo data and the 7
-// atlases of mricron-data that needed it (doc/design_notes.md, "Fold repair and what the
+// number of folds; after a round that undid less than half, the next undid almost none (0, 0,
+// 0, 0, 1, 2, 2 and 50 folds, or left 6 and 12 more: three calls on two noisy meshes of CGAL's
+// demo data, seven atlases of mricron-data; doc/design_notes.md, "Fold repair and what the
 // callback hears").
 constexpr double fold_repair_share = 0.5;
 
