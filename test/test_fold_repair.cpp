@@ -13,13 +13,20 @@
 // iterations (its surface still moves by 0.5 % of epsilon every 25 iterations for most of them)
 // or 350 Newton iterations (and ends at half the energy it reached without the barrier against
 // slivers), and the repair needs some left.
+// The rounds' rule, on descents scripted to leave chosen folds: a round follows only one that
+// undid at least half of the folds it started from.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
+#include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
@@ -50,8 +57,66 @@ std::size_t folded_faces(const Mesh& m)
   return count;
 }
 
+// Each script gives the folds' spikes (below) before the repair, then after each round's
+// descent; every scripted round must run, and no other.
+void check_round_rule()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  const std::size_t n = 17;
+  const Mesh patch = test::plane_patch(n);
+  const CF::Hinge_mesh mesh(patch, get(CGAL::vertex_index, patch));
+  CF::Points flat(Eigen::Index(n * n), 3);
+  for(auto v : vertices(patch))
+    for(int c = 0; c < 3; ++c)
+      flat(Eigen::Index(std::size_t(v)), c) = patch.point(v)[c];
+  // A spike: a vertex pushed past its neighbour along x, which turns the triangles between them
+  // over; the spikes lie too far apart to share a triangle's neighbour.
+  const std::array<std::size_t, 4> spikes{4 * n + 4, 4 * n + 12, 12 * n + 4, 12 * n + 12};
+  const auto with_spikes = [&](std::size_t k) {
+    CF::Points X = flat;
+    for(std::size_t s = 0; s < k; ++s)
+      X(Eigen::Index(spikes[s]), 0) += 1.6 / double(n - 1);
+    return X;
+  };
+  const std::size_t per_spike = CF::folded_triangles(mesh, with_spikes(1)).size();
+  CHECK(per_spike > 0);
+  CHECK(CF::folded_triangles(mesh, with_spikes(4)).size() == 4 * per_spike);
+  const CF::Ball_bound bound(flat, 1.);
+  const std::vector<bool> moving(n * n, true);
+  CF::Solver_options options;
+  options.max_iterations = 100;
+  for(const std::vector<std::size_t>& script :
+      {std::vector<std::size_t>{4, 3}, std::vector<std::size_t>{4, 2, 2}, std::vector<std::size_t>{4, 2, 1, 0}})
+  {
+    CF::Points X = with_spikes(script[0]);
+    CF::Solver_report path;
+    path.iterations = 10;
+    path.final_energy = 100;
+    std::size_t rounds = 0;
+    const auto descend = [&](const CF::Solver_options&, const CF::Iteration_callback& callback, CF::Points& Y) {
+      ++rounds;
+      Y = with_spikes(script[(std::min)(rounds, script.size() - 1)]);
+      CF::Solver_report report;
+      report.status = PMP::Constrained_fairing_status::CONVERGED;
+      report.iterations = report.energy_evaluations = 1;
+      report.final_energy = 100 - double(rounds);
+      callback(1, report.final_energy);
+      return report;
+    };
+    const auto heard = [](std::size_t, double) { return true; };
+    const CF::Fold_count count = CF::repair_folds(mesh, bound, moving, descend, options, heard, X, path);
+    std::cout << "scripted spikes " << script[0] << " -> ... -> " << script.back() << ": " << rounds << " rounds, folds "
+              << count.before << " -> " << count.after << std::endl;
+    CHECK(rounds == script.size() - 1);
+    CHECK(count.before == script[0] * per_spike && count.after == script.back() * per_spike);
+    CHECK(path.iterations == 10 + rounds && path.final_energy == 100 - double(rounds));
+  }
+}
+
 int main()
 {
+  check_round_rule();
+
   Mesh m;
   CHECK(CGAL::IO::read_polygon_mesh(CONSTRAINED_FAIRING_DATA_DIR "/head.off", m));
   const double eps = 0.5 * test::mean_edge_length(m);
