@@ -63,12 +63,9 @@ void check_round_rule()
 {
   namespace CF = PMP::internal::Constrained_fairing;
   const std::size_t n = 17;
-  const Mesh patch = test::plane_patch(n);
-  const CF::Hinge_mesh mesh(patch, get(CGAL::vertex_index, patch));
-  CF::Points flat(Eigen::Index(n * n), 3);
-  for(auto v : vertices(patch))
-    for(int c = 0; c < 3; ++c)
-      flat(Eigen::Index(std::size_t(v)), c) = patch.point(v)[c];
+  const test::Indexed patch(test::plane_patch(n));
+  const CF::Hinge_mesh& mesh = patch.hinges;
+  const CF::Points& flat = patch.X;
   // A spike: a vertex pushed past its neighbour along x, which turns the triangles between them
   // over; the spikes lie too far apart to share a triangle's neighbour.
   const std::array<std::size_t, 4> spikes{4 * n + 4, 4 * n + 12, 12 * n + 4, 12 * n + 12};
