@@ -36,7 +36,16 @@
 // each other through the gap that the other's ridge opens: the first whose leaving unties the
 // seeds and lets the ridges close, the background first (it has no surface of its own, so nothing
 // is left touching itself), then the block's labels in order. A label so left touches itself at
-// the ridge, and label_surface() splits it there.
+// the ridge.
+//
+// Where a label is still left touching itself at a point of the cell (four labels each on two
+// opposite voxels of the block, say, or two pairs of a ring in one sheet in both its cells), every
+// node gets a point of its own and the centre a small ball of one label: each other label's
+// holes are capped between it and the ball, and the ball's regions open into it, joined through
+// the centre. The ball parts every other label from itself. Its label is the first, the
+// background before the block's labels in order, whose surfaces close, pass each point once and
+// whose boxes are made; where none is, the cell stays as it was, and label_surface() splits the
+// label that touches itself.
 //
 // Each point's box: the cell shrunk by `margin` (a fraction of the spacing) on every side for a
 // cell of one point; with more, the half or whole of each axis that the quarters of its faces
@@ -44,8 +53,8 @@
 // lie farthest apart, at the centre plane or, where both lie on one side of it, at the quarter
 // plane; a junction takes an octant that no other box meets; and each box keeps `margin` from the
 // planes that cut it. The boxes of different points never meet, so no two points can meet. Where
-// the seeds still conflict or no box can be cut apart, the cell keeps one point per sheet: its
-// labels' surfaces touch there, and label_surface() splits them.
+// the seeds still conflict or no box can be cut apart, the cell keeps one point per sheet, or
+// takes the ball above.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_DUAL_CELL_H
@@ -59,6 +68,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -261,6 +271,7 @@ public:
       m_parent[std::size_t(root(id))] = root(m_seed[std::size_t(node)]);
   }
   void keep_apart(int id, int other) { m_apart.push_back({id, other}); }
+  bool empty() const { return m_parent.empty(); }
   bool conflict() const
   {
     for(const auto& pair : m_apart)
@@ -317,7 +328,7 @@ public:
       return;
     const std::array<int, 12> sheet = m_nodes.sheets();
     Dual_cell_seeds doubled;
-    seed_doubled_edges(label, sheet, doubled);
+    const unsigned doubled_rings = seed_doubled_edges(label, sheet, doubled);
     Dual_cell_seeds seeds = doubled;
     seed_pinched_labels(sheet, seeds, std::nullopt);
     // Two pinched labels may tie their seeds together; then rings of four labels are split, or
@@ -350,6 +361,8 @@ public:
       one_point_per_sheet(sheet);
       make_boxes(margin);
     }
+    if(!seeds.empty() && !manifold_at_points(background, doubled_rings))
+      place_ball(background, margin);
   }
 
   // The number of points.
@@ -478,10 +491,11 @@ private:
   }
 
   // Doubled edges: a paired ring whose two pairs are one sheet here and in the next cell along
-  // its axis; each pair seeds a point.
+  // its axis; each pair seeds a point. Returns the rings so doubled, a bit per ring.
   template <typename LabelAt>
-  void seed_doubled_edges(const LabelAt& label, const std::array<int, 12>& sheet, Dual_cell_seeds& seeds) const
+  unsigned seed_doubled_edges(const LabelAt& label, const std::array<int, 12>& sheet, Dual_cell_seeds& seeds) const
   {
+    unsigned doubled = 0;
     for(int a = 0; a < 3; ++a)
     {
       const int ring = 2 * a + 1;
@@ -509,8 +523,10 @@ private:
         seeds.plant(2 * ring, p);
         seeds.plant(2 * ring + 1, q);
         seeds.keep_apart(p, q);
+        doubled |= 1u << ring;
       }
     }
+    return doubled;
   }
 
   // Pinched labels: a label with two regions or more at one sheet; each region seeds the nodes
@@ -625,11 +641,16 @@ private:
   // from its second voxel): from the point next to the edge it arrives by to the one it leaves by.
   std::array<int, 2> corner(int f) const
   {
+    const std::array<int, 2> axes = corner_axes(f);
+    return {point(f, axes[0]), point(f, axes[1])};
+  }
+  // The axes of the dual edges it arrives by and leaves by.
+  static std::array<int, 2> corner_axes(int f)
+  {
     const int a = f / 4, u = (a + 1) % 3, w = (a + 2) % 3, o = voxel_of_face(f, 0);
     const int du = 1 - ((o >> u) & 1), dw = 1 - ((o >> w) & 1);
     const bool odd = du != dw; // corners 1 and 3 of (0, 0), (1, 0), (1, 1), (0, 1)
-    const int in = odd ? u : w, out = odd ? w : u;
-    return {point(f, in), point(f, out)};
+    return {odd ? u : w, odd ? w : u};
   }
 
   // Whether each label's surface stays closed across the segments where a face's corner is two
@@ -688,6 +709,167 @@ private:
     return true;
   }
 
+  // The holes of label l: the segments its faces use once, run with the label on their left seen
+  // from outside, followed head to tail into loops of points; false where a point is passed twice
+  // (the label would touch itself there).
+  bool hole_loops(Label l, std::vector<std::vector<int> >& loops) const
+  {
+    std::vector<std::array<int, 2> > once;
+    for_each_side_of(l, [&](int f, int voxel) {
+      std::array<int, 2> e = corner(f);
+      if(voxel == voxel_of_face(f, 1))
+        std::swap(e[0], e[1]); // the polygon runs counterclockwise seen from the other side
+      if(e[0] == e[1])
+        return;
+      const auto reverse = std::find(once.begin(), once.end(), std::array<int, 2>{e[1], e[0]});
+      if(reverse != once.end())
+        once.erase(reverse);
+      else
+        once.push_back(e);
+    });
+    // Each point of a hole is left once and reached once, so the segments make loops.
+    std::array<int, 40> out, in;
+    out.fill(none);
+    in.fill(0);
+    for(std::size_t s = 0; s < once.size(); ++s)
+    {
+      if(out[std::size_t(once[s][0])] != none)
+        return false;
+      out[std::size_t(once[s][0])] = int(s);
+      ++in[std::size_t(once[s][1])];
+    }
+    for(int p = 0; p < 40; ++p)
+      if(in[std::size_t(p)] != (out[std::size_t(p)] != none ? 1 : 0))
+        return false;
+    loops.clear();
+    std::vector<bool> used(once.size(), false);
+    for(std::size_t first = 0; first < once.size(); ++first)
+      if(!used[first])
+      {
+        loops.emplace_back();
+        for(std::size_t s = first; !used[s]; s = std::size_t(out[std::size_t(once[s][1])]))
+        {
+          used[s] = true;
+          loops.back().push_back(once[s][0]);
+        }
+      }
+    return true;
+  }
+
+  // Where no choice above keeps every label's surface from touching itself (four labels each on
+  // two opposite voxels of the block, say): every node its own point and, at the centre, a small
+  // ball of one label. Each other label's holes are capped between it and the ball, fanned around
+  // each loop; the ball's own regions open into it, joined through the centre. Every label but
+  // the ball's is so parted from itself at the centre, by the ball. The block's labels in order,
+  // the background first, and the first kept whose surfaces close and pass each point once and
+  // whose boxes are made; where none is, the cell stays as it was.
+  void place_ball(Label background, double margin)
+  {
+    const auto before = std::make_tuple(m_count, m_point, m_low, m_high, m_caps, m_first_junction);
+    boost::container::static_vector<Label, 8> labels = block_labels();
+    std::stable_partition(labels.begin(), labels.end(), [background](Label l) { return l == background; });
+    std::array<int, 12> own;
+    for(int v = 0; v < 12; ++v)
+      own[std::size_t(v)] = v;
+    std::vector<std::vector<int> > loops;
+    for(const Label ball : labels)
+    {
+      number_points(own);
+      m_caps.clear();
+      m_first_junction = none;
+      bool capped = true;
+      for(const Label l : block_labels())
+        if(l != ball)
+        {
+          capped = capped && hole_loops(l, loops);
+          for(const std::vector<int>& loop : loops)
+            for(std::size_t k = 1; capped && k + 1 < loop.size(); ++k)
+              m_caps.push_back({{loop[0], loop[k + 1], loop[k]}, {l, ball}});
+        }
+      if(capped && surfaces_closed() && manifold_at_points(background) && make_boxes(margin))
+        return;
+    }
+    std::tie(m_count, m_point, m_low, m_high, m_caps, m_first_junction) = before;
+  }
+
+  // Whether the surface of every label but `skip` passes each point of the cell once: around the
+  // point, the label's faces, caps and bridges make one fan closed on itself. A fan's arms are
+  // the dual edges out of the cell, by node, and the segments to the cell's other points; the two
+  // nodes of a `doubled` ring (a bit per ring) at one point are one dual edge.
+  bool manifold_at_points(Label skip, unsigned doubled = 0) const
+  {
+    std::array<int, 12> arm_of_node;
+    for(int v = 0; v < 12; ++v)
+      arm_of_node[std::size_t(v)] = v;
+    for(int ring = 0; ring < 6; ++ring)
+      if((doubled >> ring) & 1u)
+      {
+        int at[2] = {none, none};
+        for(int f = 0; f < 12; ++f)
+          if(m_nodes.active(f))
+            for(int axis = 0; axis < 3; ++axis)
+              if(axis != f / 4 && m_nodes.node(f, axis) / 2 == ring)
+                at[m_nodes.node(f, axis) % 2] = point(f, axis);
+        if(at[0] == at[1])
+          arm_of_node[std::size_t(2 * ring + 1)] = 2 * ring;
+      }
+    std::vector<std::array<int, 2> > wedges; // arms: node, or 12 + the other point
+    for(const Label l : block_labels())
+    {
+      if(l == skip)
+        continue;
+      for(int p = 0; p < m_count; ++p)
+      {
+        wedges.clear();
+        for_each_side_of(l, [&](int f, int) {
+          const std::array<int, 2> axes = corner_axes(f);
+          const int a = point(f, axes[0]), b = point(f, axes[1]);
+          const int in = arm_of_node[std::size_t(m_nodes.node(f, axes[0]))],
+                    out = arm_of_node[std::size_t(m_nodes.node(f, axes[1]))];
+          if(a == p)
+            wedges.push_back({in, b == p ? out : 12 + b});
+          else if(b == p)
+            wedges.push_back({12 + a, out});
+        });
+        for(const Cap& cap : m_caps)
+          if(cap.labels[0] == l || cap.labels[1] == l)
+            for(std::size_t k = 0; k < 3; ++k)
+              if(cap.points[k] == p)
+                wedges.push_back({12 + cap.points[(k + 1) % 3], 12 + cap.points[(k + 2) % 3]});
+        for(const Bridge& bridge : m_bridges)
+          if(bridge.labels[0] == l || bridge.labels[1] == l)
+            for(std::size_t k = 0; k < 2; ++k)
+              if(bridge.points[k] == p)
+                wedges.push_back({12 + bridge.points[1 - k],
+                                  arm_of_node[std::size_t(m_nodes.node(bridge.faces[k], bridge.axis))]});
+        // One closed fan: every arm in two wedges, all joined.
+        std::array<int, 52> uses{}, parent;
+        for(int x = 0; x < 52; ++x)
+          parent[std::size_t(x)] = x;
+        const auto root = [&parent](int x) {
+          while(parent[std::size_t(x)] != x)
+            x = parent[std::size_t(x)];
+          return x;
+        };
+        for(const auto& w : wedges)
+        {
+          ++uses[std::size_t(w[0])], ++uses[std::size_t(w[1])];
+          parent[std::size_t(root(w[0]))] = root(w[1]);
+        }
+        int fans = 0;
+        for(int x = 0; x < 52; ++x)
+        {
+          if(uses[std::size_t(x)] != 0 && uses[std::size_t(x)] != 2)
+            return false;
+          fans += uses[std::size_t(x)] != 0 && root(x) == x;
+        }
+        if(fans > 1)
+          return false;
+      }
+    }
+    return true;
+  }
+
   // Where the holes border several interfaces: each label's holes are the segments its faces use
   // once, run with the label on their left seen from outside, and each must be the reverse of one
   // other label's. The holes of a label make loops (a point that two of them pass would pinch the
@@ -704,47 +886,18 @@ private:
     };
     std::vector<Hole_segment> holes;
     std::vector<Label> loop_label;
+    std::vector<std::vector<int> > loops;
     for(const Label l : block_labels())
     {
-      std::vector<std::array<int, 2> > once;
-      for_each_side_of(l, [&](int f, int voxel) {
-        std::array<int, 2> e = corner(f);
-        if(voxel == voxel_of_face(f, 1))
-          std::swap(e[0], e[1]); // the polygon runs counterclockwise seen from the other side
-        if(e[0] == e[1])
-          return;
-        const auto reverse = std::find(once.begin(), once.end(), std::array<int, 2>{e[1], e[0]});
-        if(reverse != once.end())
-          once.erase(reverse);
-        else
-          once.push_back(e);
-      });
-      // Each point of a hole is left once and reached once, so the segments make loops.
-      std::array<int, 40> out, in;
-      out.fill(none);
-      in.fill(0);
-      for(std::size_t s = 0; s < once.size(); ++s)
+      if(!hole_loops(l, loops))
+        return false;
+      for(const std::vector<int>& points : loops)
       {
-        if(out[std::size_t(once[s][0])] != none)
-          return false;
-        out[std::size_t(once[s][0])] = int(s);
-        ++in[std::size_t(once[s][1])];
+        const int loop = int(loop_label.size());
+        loop_label.push_back(l);
+        for(std::size_t k = 0; k < points.size(); ++k)
+          holes.push_back({{points[k], points[(k + 1) % points.size()]}, l, loop});
       }
-      for(int p = 0; p < 40; ++p)
-        if(in[std::size_t(p)] != (out[std::size_t(p)] != none ? 1 : 0))
-          return false;
-      std::vector<bool> used(once.size(), false);
-      for(std::size_t first = 0; first < once.size(); ++first)
-        if(!used[first])
-        {
-          const int loop = int(loop_label.size());
-          loop_label.push_back(l);
-          for(std::size_t s = first; !used[s]; s = std::size_t(out[std::size_t(once[s][1])]))
-          {
-            used[s] = true;
-            holes.push_back({once[s], l, loop});
-          }
-        }
     }
     // The groups of loops, joined through the segments they share.
     std::vector<int> group(loop_label.size());
