@@ -70,8 +70,9 @@ outside the array count as `background`.
   two points at the cell, one for the faces around each of two opposite voxels, and the other two
   labels meet between them across a triangle of those points and the next cell's point along the
   edge. Where none of these serves (four labels each on two opposite voxels of a cell, say; none
-  in Debian's atlases), the cell gets a point for each edge around its centre and a small ball of
-  one label there, the holes of the other labels capped against it. So every label's surface is
+  in Debian's atlases), the cell gets a point on each edge around its centre (two where an
+  edge's faces pair up) and a small ball of one label there, the holes of the other labels
+  capped against it. So every label's surface is
   a manifold (made by `label_surface()` without splitting): none split on Debian's atlases or on
   600 maps of random voxels of 3 to 6 labels. No two boxes meet: the points stay apart through
   any fairing within their boxes.
