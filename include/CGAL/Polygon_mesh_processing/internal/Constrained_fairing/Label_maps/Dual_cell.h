@@ -86,6 +86,16 @@ inline int voxel_of_face(int f, int side)
   return (side << a) | ((f & 1) << u) | (((f >> 1) & 1) << w);
 }
 
+// The root of item v in a forest of parent links: the few items of a cell (nodes, voxels, seeds,
+// loops) are joined by linking one root to another, with no ranks.
+template <typename Parents>
+int root_in(const Parents& parent, int v)
+{
+  while(parent[std::size_t(v)] != v)
+    v = parent[std::size_t(v)];
+  return v;
+}
+
 // The rings and nodes of a dual cell: what both cells of a ring agree on.
 template <typename Label>
 class Dual_cell_nodes
@@ -144,11 +154,7 @@ public:
     std::array<int, 12> parent;
     for(int v = 0; v < 12; ++v)
       parent[std::size_t(v)] = v;
-    const auto root = [&parent](int v) {
-      while(parent[std::size_t(v)] != v)
-        v = parent[std::size_t(v)];
-      return v;
-    };
+    const auto root = [&parent](int v) { return root_in(parent, v); };
     for(int f = 0; f < 12; ++f)
       if(m_active[std::size_t(f)])
         parent[std::size_t(root(m_node[std::size_t(f)][0]))] = root(m_node[std::size_t(f)][1]);
@@ -156,12 +162,7 @@ public:
       parent[std::size_t(v)] = root(v);
     return parent;
   }
-  int region(int o) const
-  {
-    while(m_region[std::size_t(o)] != o)
-      o = m_region[std::size_t(o)];
-    return o;
-  }
+  int region(int o) const { return root_in(m_region, o); }
 
 private:
   void join_regions(int x, int y) { m_region[std::size_t(region(x))] = region(y); }
@@ -299,12 +300,7 @@ public:
   }
 
 private:
-  int root(int i) const
-  {
-    while(m_parent[std::size_t(i)] != i)
-      i = m_parent[std::size_t(i)];
-    return i;
-  }
+  int root(int i) const { return root_in(m_parent, i); }
 
   std::vector<int> m_parent;
   std::array<int, 12> m_seed;
@@ -846,11 +842,7 @@ private:
         std::array<int, 52> uses{}, parent;
         for(int x = 0; x < 52; ++x)
           parent[std::size_t(x)] = x;
-        const auto root = [&parent](int x) {
-          while(parent[std::size_t(x)] != x)
-            x = parent[std::size_t(x)];
-          return x;
-        };
+        const auto root = [&parent](int x) { return root_in(parent, x); };
         for(const auto& w : wedges)
         {
           ++uses[std::size_t(w[0])], ++uses[std::size_t(w[1])];
@@ -903,11 +895,7 @@ private:
     std::vector<int> group(loop_label.size());
     for(std::size_t k = 0; k < group.size(); ++k)
       group[k] = int(k);
-    const auto root = [&group](int k) {
-      while(group[std::size_t(k)] != k)
-        k = group[std::size_t(k)];
-      return k;
-    };
+    const auto root = [&group](int k) { return root_in(group, k); };
     std::vector<Label> across(holes.size());
     for(std::size_t h = 0; h < holes.size(); ++h)
     {
