@@ -72,10 +72,9 @@ outside the array count as `background`.
   edge. Where none of these serves (four labels each on two opposite voxels of a cell, say; none
   in Debian's atlases), the cell gets a point on each edge around its centre (two where an
   edge's faces pair up) and a small ball of one label there, the holes of the other labels
-  capped against it. So every label's surface is
-  a manifold (made by `label_surface()` without splitting): none split on Debian's atlases or on
-  600 maps of random voxels of 3 to 6 labels. No two boxes meet: the points stay apart through
-  any fairing within their boxes.
+  capped against it. So every label's surface is a manifold (made by `label_surface()` without
+  splitting): none split on Debian's atlases or on 600 maps of random voxels of 3 to 6 labels.
+  No two boxes meet: the points stay apart through any fairing within their boxes.
 - Points of cells of several points, at the centres of their boxes, can fold a triangle onto its
   neighbour or through another: the points of such triangles, of any cell, move to the mean of
   their neighbours (with the points around them after the first round), within seven eighths
@@ -326,19 +325,19 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
   // The faces left for the end: axis, labels, polygon.
   std::vector<std::tuple<int, std::array<Label, 2>, Polygon> > dead_ends;
   const auto add_cut = [&](const Polygon& face, const std::array<Label, 2>& labels, bool dead_end) {
-    const auto at = [&face](std::size_t v) {
-      return std::size_t(std::find_if(face.begin(), face.end(), [v](const auto& x) { return x.first == v; }) -
-                         face.begin());
-    };
+    const std::size_t m = face.size();
     for(const std::array<std::size_t, 3>& t : ears)
     {
       triangles.push_back({Point_index(t[0]), Point_index(t[1]), Point_index(t[2])});
       face_labels.push_back(labels);
+      std::size_t at[3]; // the triangle's points in the polygon
       int corner[3];
-      for(int k = 0; k < 3; ++k)
-        corner[k] = std::find_if(face.begin(), face.end(), [&](const auto& x) {
-                      return x.first == t[std::size_t(k)];
-                    })->second;
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        at[k] = std::size_t(std::find_if(face.begin(), face.end(), [&](const auto& x) { return x.first == t[k]; }) -
+                            face.begin());
+        corner[k] = face[at[k]].second;
+      }
       if(corner[0] == corner[1] || corner[1] == corner[2] || corner[0] == corner[2])
       {
         of_two_cells.push_back(t);
@@ -346,9 +345,9 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
       }
       for(std::size_t k = 0; dead_end && k < 3; ++k)
       {
-        const std::size_t a = t[k], b = t[(k + 1) % 3], i = at(a), j = at(b), m = face.size();
-        if((i + 1) % m != j && (j + 1) % m != i && (corner[k] + 2) % 4 != corner[(k + 1) % 3])
-          diagonals.insert({(std::min)(a, b), (std::max)(a, b)});
+        const std::size_t next = (k + 1) % 3; // the edge from point k to the next: a diagonal?
+        if((at[k] + 1) % m != at[next] && (at[next] + 1) % m != at[k] && (corner[k] + 2) % 4 != corner[next])
+          diagonals.insert({(std::min)(t[k], t[next]), (std::max)(t[k], t[next])});
       }
     }
   };
