@@ -500,13 +500,20 @@ void check_bridged_cells()
 
 // Cells where no seeds, splits or label left whole keep every label from touching itself: four
 // labels each on two opposite voxels of a block, alone and with the background as one of them,
-// and one such block in random voxels whose cell before it along an axis has the same pairs of
-// a ring in one sheet. The cell gets a point per node and a small ball of one label at the
-// centre, the other labels capped against it. Checked: every label's surface a manifold that
-// does not intersect itself, besides the checks of every map; the cell's 6 points, one per
-// half-axis, and a cap per voxel not of the ball's label.
+// and a block of random voxels of 4 labels with a cell whose ring has its two pairs in one
+// sheet there and in the next cell (a doubled edge, whose seeds conflict). The cell gets a point
+// per node and a small ball of one label at the centre, the other labels capped against it.
+// Checked: every label's surface a manifold that does not intersect itself, besides the checks
+// of every map; the first cells' 6 points, one per half-axis, and a cap per voxel not of the
+// ball's label.
 void check_ball_cells()
 {
+  const std::string doubled = "000130022033121101222231332010102202202101312331112130321123121212002232"
+                              "310211112102030313111213302112120101102120030332122013120331223213213201"
+                              "130123032033102111121102020201332210123323132323132210231031020022101203";
+  check(generated({6, 6, 6}, {1, 1, 1},
+                  [&doubled](long i, long j, long k) { return Label(doubled[std::size_t(36 * i + 6 * j + k)] - '0'); }),
+        0, true);
   for(const Label odd_one : {Label(1), Label(0)})
   {
     const auto antipodal = [odd_one](long i, long j, long k) {
