@@ -158,6 +158,14 @@ int main()
   CHECK(states(manual, "smallest angle is under both " + repair_angle + " degrees and its own at the start"));
   CHECK(states(manual, "the repair after the descent takes over at " + repair_angle + " degrees"));
 
+  // The barrier against folds on label surfaces (Fold_barrier.h), in both manuals.
+  const std::string angle = number(CF::interface_fold_angle);
+  for(const std::string* text : {&interfaces, &manual})
+  {
+    CHECK(states(*text, "more than " + angle + " degrees apart adds " + number(CF::interface_fold_weight) + " times"));
+    CHECK(states(*text, "\\f$ (\\cos " + angle + "^\\circ - \\cos\\theta)^2 \\f$"));
+  }
+
   // The README and the tool's usage.
   const std::string readme = text_of("README.md");
   CHECK(states(readme, "`number_of_iterations` (default " + std::to_string(q.options.max_iterations) + ")"));

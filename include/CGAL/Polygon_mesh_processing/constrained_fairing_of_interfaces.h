@@ -29,7 +29,11 @@ interfaces (the triangles of one pair of labels) share their points, so the labe
 
 The objective is that of `constrained_fairing()`: the bending energy, here inside each interface
 (its hinges are the edges of exactly two of its triangles), with the barrier against slivers and,
-with `Constrained_fairing_objective::ACCURATE`, the fidelity term. The junction lines, where three
+with `Constrained_fairing_objective::ACCURATE`, the fidelity term. A barrier against folds is
+added: a hinge whose two normals are more than 60 degrees apart adds 3 times
+\f$ (\cos 60^\circ - \cos\theta)^2 \f$, \f$ \theta \f$ the angle between them, which keeps
+triangles from turning over against their neighbours where the junction lines and the volumes pull
+(`sliver_barrier_weight(0)` removes both barriers). The junction lines, where three
 labels or more meet along an edge, are faired as curves: their second differences, relative to
 their segments' length, are added to the objective, so that a line keeps its crease and is not
 rounded off. The volume that each label's surface encloses, where that surface is closed, is held

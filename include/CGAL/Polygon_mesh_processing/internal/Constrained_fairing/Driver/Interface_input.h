@@ -8,9 +8,9 @@
 //  - its triangles are oriented from their smaller label into their larger, and its hinges are
 //    the edges of exactly two triangles of one interface (where an interface meets itself along
 //    an edge, no hinge);
-//  - its objective adds the junction lines' term (Curve_bending.h) and the labels' volumes
-//    (Label_volumes.h), each label's held at its input value, and its barrier pushes back
-//    needles of a larger angle;
+//  - its objective adds the junction lines' term (Curve_bending.h), the labels' volumes
+//    (Label_volumes.h), each label's held at its input value, and a barrier against folds
+//    (Fold_barrier.h); its barrier against slivers pushes back needles of a larger angle;
 //  - after the descent, the points of triangles that cross are pulled back (Crossing_repair.h).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
@@ -25,6 +25,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
@@ -154,6 +155,9 @@ public:
     m_volumes.emplace(mesh.triangles, mesh_sides, X0, settings.label_volume_weight);
     objective.add_curve_bending(*m_curves);
     objective.add_label_volumes(*m_volumes);
+    // Without the barrier against slivers, the user asked for the energy without barriers.
+    if(settings.sliver_barrier_weight > 0)
+      objective.add_fold_barrier(Fold_barrier(interface_fold_weight, interface_fold_angle));
   }
 
   template <typename Bound>

@@ -48,6 +48,8 @@
 //    `corners`.
 // A triangle's term counts in the tile of its first corner; its gradient is added at its corners
 // in the tile, in the order of the tile's triangles.
+// The barrier against folds (Fold_barrier.h), a function of a hinge's |n1 - n2|^2 only, is
+// added to the hinge's term where that is at hand.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_BENDING_ENERGY_H
@@ -55,6 +57,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
@@ -114,13 +117,14 @@ public:
   // The number of hinges left out because of a degenerate triangle.
   std::size_t number_of_degenerate_hinges() const { return m_mesh.hinges.size() - m_number_of_hinges; }
 
-  // The energy, plus the `terms` of the triangles (see above).
+  // The energy, plus the `terms` of the triangles (see above) and the barrier against folds of
+  // the hinges (Fold_barrier.h).
   template <typename Triangle_terms = No_triangle_terms>
-  double value(const Points& X, const Triangle_terms& terms = {})
+  double value(const Points& X, const Triangle_terms& terms = {}, const Fold_barrier& folds = {})
   {
     m_points = &m_unit_scaled(X);
     m_workers.for_each(m_tiles.size(), [&](std::size_t t, std::size_t worker) {
-      m_partial[t] = evaluate_tile<false>(m_tiles[t], m_scratch[worker], nullptr, nullptr, terms);
+      m_partial[t] = evaluate_tile<false>(m_tiles[t], m_scratch[worker], nullptr, nullptr, terms, folds);
     });
     return sum_of_partials();
   }
@@ -143,10 +147,12 @@ public:
   // It ranges over orders of magnitude on scans (small and needle triangles are stiff), which is
   // what the quasi-Newton method scales its steps by.
   //
-  // With `terms`, adds the triangles' terms to the energy and their gradients and stiffnesses.
+  // With `terms`, adds the triangles' terms to the energy and their gradients and stiffnesses;
+  // with `folds`, the hinges' terms (Fold_barrier.h) to the energy, their dE/dC to kC below and
+  // their weight to w_h^2.
   template <typename Triangle_terms = No_triangle_terms>
   double value_and_gradient(const Points& X, Points& G, Stiffness_and_reach* scales = nullptr,
-                            const Triangle_terms& terms = {})
+                            const Triangle_terms& terms = {}, const Fold_barrier& folds = {})
   {
     m_points = &m_unit_scaled(X);
     G.resize(X.rows(), 3);
@@ -156,7 +162,7 @@ public:
       scales->reach.resize(X.rows());
     }
     m_workers.for_each(m_tiles.size(), [&](std::size_t t, std::size_t worker) {
-      m_partial[t] = evaluate_tile<true>(m_tiles[t], m_scratch[worker], &G, scales, terms);
+      m_partial[t] = evaluate_tile<true>(m_tiles[t], m_scratch[worker], &G, scales, terms, folds);
     });
     return sum_of_partials();
   }
@@ -304,7 +310,7 @@ private:
   // `gradient`, also the gradient, and the scales if asked, of its vertices.
   template <bool gradient, typename Triangle_terms>
   double evaluate_tile(const Tile& tile, Scratch& scratch, Points* G, Stiffness_and_reach* scales,
-                       const Triangle_terms& terms) const
+                       const Triangle_terms& terms, const Fold_barrier& folds) const
   {
     const Points& P = *m_points;
     const std::array<Index, 3>* triangles = m_tile_triangles.data() + tile.triangle_begin;
@@ -354,14 +360,16 @@ private:
       const double L = e.squaredNorm(), inverse_S = 1 / (F1.l + F2.l), C = 0.5 * d.squaredNorm();
       const double kC = 1.5 * L * inverse_S; // dE/dC
       if(j < owned)
-        energy += kC * C;
+        energy += kC * C + folds.value(C);
       if(!gradient)
         continue;
       const double kS = -kC * C * inverse_S; // dE/dS
-      F1.coefficient += (kC * F1.inverse_l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
-      F2.coefficient -= (kC * F2.inverse_l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
-      F1.hinge_weight += 0.5 * kC;
-      F2.hinge_weight += 0.5 * kC;
+      const double kN = kC + folds.derivative(C); // d(E + P)/dC
+      F1.coefficient += (kN * F1.inverse_l) * (d - d.dot(F1.n) * F1.n) + kS * F1.n;
+      F2.coefficient -= (kN * F2.inverse_l) * (d - d.dot(F2.n) * F2.n) - kS * F2.n;
+      const double weight = 0.5 * kC + folds.stiffness_weight(C); // w_h^2, and the barrier's
+      F1.hinge_weight += weight;
+      F2.hinge_weight += weight;
       const Eigen::Vector3d edge_term = (3 * C * inverse_S) * e; // 2 dE/dL times the edge
       if(hinge.v[0] - first < size)
         point(*G, hinge.v[0]) -= edge_term;

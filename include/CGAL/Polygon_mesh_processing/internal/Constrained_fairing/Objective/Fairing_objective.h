@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
-// against slivers (Sliver_barrier.h), plus the bending of the curves the energy's hinges do not
+// against slivers (Sliver_barrier.h), plus, on a multi-label surface, the barrier against folds
+// (Fold_barrier.h), plus the bending of the curves the energy's hinges do not
 // cross (Curve_bending.h: a mesh's creases, a multi-label surface's junction lines), plus, on a
 // multi-label surface, its labels' volumes (Label_volumes.h), plus, for the
 // accurate objective, a fidelity term that keeps the surface near an anchor a_i:
@@ -27,6 +28,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
@@ -84,13 +86,16 @@ public:
     m_volumes = &volumes;
   }
 
+  // Adds the barrier against folds.
+  void add_fold_barrier(const Fold_barrier& folds) { m_folds = folds; }
+
   std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
 
   double bending_energy(const Points& X) { return m_bending.value(X); }
 
   double value(const Points& X)
   {
-    double sum = m_bending.value(X, Triangle_terms{m_barrier, nullptr});
+    double sum = m_bending.value(X, Triangle_terms{m_barrier, nullptr}, m_folds);
     if(m_curves)
       sum += m_curves->value(X);
     if(m_volumes)
@@ -103,7 +108,7 @@ public:
   double value_and_gradient(const Points& X, Points& G, Stiffness_and_reach* scales = nullptr)
   {
     double sum = m_volumes ? m_volumes->update_pulls(X) : 0;
-    sum += m_bending.value_and_gradient(X, G, scales, Triangle_terms{m_barrier, m_volumes});
+    sum += m_bending.value_and_gradient(X, G, scales, Triangle_terms{m_barrier, m_volumes}, m_folds);
     if(m_curves)
       sum += m_curves->add_gradient(X, G, scales);
     if(m_weight.empty())
@@ -158,6 +163,7 @@ private:
   Label_volumes* m_volumes = nullptr;
   Bending_energy m_bending;
   Sliver_barrier m_barrier;
+  Fold_barrier m_folds; // none but on a multi-label surface
   std::vector<double> m_weight; // empty without the fidelity term
   std::vector<double> m_partial;
 };

@@ -49,6 +49,13 @@ constexpr double default_sliver_threshold = 0.0906485352754803;
 // instead of 1 the Voronoi maps kept angles of 4.7 degrees.
 constexpr double default_interface_sliver_angle = 6;
 
+// The barrier against folds of a multi-label surface (Fold_barrier.h): its weight per hinge, and
+// the angle between a hinge's normals from which the hinge pays, in degrees. On Debian's nine
+// atlases, weight 1 left folds on seven; 3 and 10 on two (those folded from the smoothed start),
+// 3 in the fewest evaluations; 45 degrees cost evaluations, 75 let a few turn over (design notes).
+constexpr double interface_fold_weight = 3;
+constexpr double interface_fold_angle = 60;
+
 // The smallest angle, in degrees, under which the repair after the descent pulls a triangle of a
 // multi-label surface back towards its start (Crossing_repair.h), unless it started smaller.
 // Where the bounds and the junction lines hold a needle against the barrier, the descent leaves
