@@ -12,17 +12,16 @@
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_input.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <random>
 #include <vector>
 
@@ -132,38 +131,25 @@ void check_gradient()
   }
 }
 
+// No point of the soup fixed by the user.
+struct No_constraints
+{
+  bool is_constrained(std::size_t) const { return false; }
+};
+
 // The folded triangles of a multi-label soup: those whose normal points against the sum of its
-// hinge neighbours' (Fold_repair.h), the hinges as the fairing sees them.
-std::size_t folds_of(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 3> >& triangles,
+// hinge neighbours' (Fold_repair.h), the triangles oriented and the hinges paired as the fairing
+// does (Interface_input.h).
+std::size_t folds_of(std::vector<Point> points, const std::vector<std::array<std::size_t, 3> >& triangles,
                      const std::vector<std::array<std::int64_t, 2> >& face_labels)
 {
-  // Orient each triangle from its smaller label into its larger, and pair the triangles of one
-  // interface that are alone on an edge.
-  std::vector<std::array<CF::Index, 3> > oriented;
-  for(std::size_t f = 0; f < triangles.size(); ++f)
-  {
-    const auto& t = triangles[f];
-    oriented.push_back(face_labels[f][0] < face_labels[f][1]
-                         ? std::array<CF::Index, 3>{CF::Index(t[0]), CF::Index(t[1]), CF::Index(t[2])}
-                         : std::array<CF::Index, 3>{CF::Index(t[0]), CF::Index(t[2]), CF::Index(t[1])});
-  }
-  std::map<std::array<std::size_t, 4>, std::vector<CF::Index> > sides;
-  for(std::size_t f = 0; f < triangles.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t a = triangles[f][k], b = triangles[f][(k + 1) % 3];
-      const auto l = std::minmax(face_labels[f][0], face_labels[f][1]);
-      sides[{(std::min)(a, b), (std::max)(a, b), std::size_t(l.first), std::size_t(l.second)}].push_back(CF::Index(f));
-    }
-  std::vector<std::array<CF::Index, 2> > hinge_faces;
-  for(const auto& side : sides)
-    if(side.second.size() == 2)
-      hinge_faces.push_back({side.second[0], side.second[1]});
-  const CF::Hinge_mesh mesh(points.size(), oriented, hinge_faces);
-  CF::Points X(Eigen::Index(points.size()), 3);
-  for(std::size_t p = 0; p < points.size(); ++p)
-    CF::point(X, p) = Eigen::Vector3d(points[p].x(), points[p].y(), points[p].z());
-  return CF::folded_triangles(mesh, X).size();
+  CF::Interface_input<std::vector<Point>, std::vector<std::array<std::size_t, 3> >,
+                      std::vector<std::array<std::int64_t, 2> > >
+    input(points, triangles, face_labels);
+  CHECK(!input.structure_error());
+  const CF::Interface_part part = input.part(No_constraints());
+  const CF::Points X = input.input_points(part);
+  return CF::folded_triangles(input.hinges(part, {}, X, CF::Fairing_settings()), X).size();
 }
 
 // Random voxels of 3 and 5 labels, whose nets have folded triangles: the fairing leaves at most
