@@ -337,9 +337,7 @@ public:
     bool placed = false;
     if(seeds.conflict())
     {
-      boost::container::static_vector<Label, 8> labels = block_labels();
-      std::stable_partition(labels.begin(), labels.end(), [background](Label l) { return l == background; });
-      for(const Label whole : labels)
+      for(const Label whole : block_labels_background_first(background))
       {
         Dual_cell_seeds fewer = doubled;
         seed_pinched_labels(sheet, fewer, whole);
@@ -575,6 +573,14 @@ private:
     return labels;
   }
 
+  // The same, the background first: the label whose choice caps no surface of its own.
+  boost::container::static_vector<Label, 8> block_labels_background_first(Label background) const
+  {
+    boost::container::static_vector<Label, 8> labels = block_labels();
+    std::stable_partition(labels.begin(), labels.end(), [background](Label l) { return l == background; });
+    return labels;
+  }
+
   // f(face, voxel) for each face with a voxel of label l on one of its sides.
   template <typename F>
   void for_each_side_of(Label l, const F& f) const
@@ -762,8 +768,7 @@ private:
   void place_ball(Label background, double margin)
   {
     const auto before = std::make_tuple(m_count, m_point, m_low, m_high, m_caps, m_first_junction);
-    boost::container::static_vector<Label, 8> labels = block_labels();
-    std::stable_partition(labels.begin(), labels.end(), [background](Label l) { return l == background; });
+    const boost::container::static_vector<Label, 8> labels = block_labels_background_first(background);
     std::array<int, 12> own;
     for(int v = 0; v < 12; ++v)
       own[std::size_t(v)] = v;
@@ -777,9 +782,13 @@ private:
       for(const Label l : block_labels())
         if(l != ball)
         {
-          capped = capped && hole_loops(l, loops);
+          if(!hole_loops(l, loops))
+          {
+            capped = false;
+            break;
+          }
           for(const std::vector<int>& loop : loops)
-            for(std::size_t k = 1; capped && k + 1 < loop.size(); ++k)
+            for(std::size_t k = 1; k + 1 < loop.size(); ++k)
               m_caps.push_back({{loop[0], loop[k + 1], loop[k]}, {l, ball}});
         }
       if(capped && surfaces_closed() && manifold_at_points(background) && make_boxes(margin))
