@@ -43,23 +43,31 @@ public:
   // triangles (all where `changed` is empty).
   std::vector<bool> find(const Points& X, const std::vector<bool>& changed) const
   {
-    std::vector<Box> all;
-    all.reserve(m_triangles.size());
-    for(std::size_t f = 0; f < m_triangles.size(); ++f)
-      all.push_back(box(X, f));
     // CGAL's parallel box intersection copies its ranges nine times over: pointers, as in CGAL's
     // self-intersection test, not boxes (0.4 GB more on a map of 0.85 M triangles).
-    std::vector<const Box*> handles, some;
+    // all the boxes, or those of the `changed` triangles (`some`) and of the triangles near them
+    std::vector<Box> boxes, some;
+    std::vector<const Box*> handles, near;
     if(changed.empty())
     {
-      handles.reserve(all.size());
-      for(const Box& b : all)
+      boxes.reserve(m_triangles.size());
+      for(std::size_t f = 0; f < m_triangles.size(); ++f)
+        boxes.push_back(box(X, f));
+      handles.reserve(boxes.size());
+      for(const Box& b : boxes)
         handles.push_back(&b);
     }
     else
+    {
       for(std::size_t f = 0; f < m_triangles.size(); ++f)
         if(changed[f])
-          some.push_back(&all[f]);
+          some.push_back(box(X, f));
+      for(const Box& b : some)
+        handles.push_back(&b);
+      boxes = boxes_near(X, some);
+      for(const Box& b : boxes)
+        near.push_back(&b);
+    }
     // Flags that the threads of the box intersection set: the set found does not depend on the
     // order of the pairs, as a pair is skipped only when both its triangles cross already.
     std::vector<std::atomic<bool> > flags(m_triangles.size());
@@ -80,11 +88,9 @@ public:
     const std::ptrdiff_t cutoff = 2000;
     if(changed.empty())
       box_self_intersection_d<Parallel_if_available_tag>(handles.begin(), handles.end(), test, cutoff);
-    else if(!some.empty())
-    {
-      std::vector<const Box*> near = boxes_near(some, all);
-      box_intersection_d<Parallel_if_available_tag>(some.begin(), some.end(), near.begin(), near.end(), test, cutoff);
-    }
+    else if(!handles.empty())
+      box_intersection_d<Parallel_if_available_tag>(handles.begin(), handles.end(), near.begin(), near.end(), test,
+                                                    cutoff);
     std::vector<bool> crossing(m_triangles.size());
     for(std::size_t f = 0; f < m_triangles.size(); ++f)
       crossing[f] = flags[f].load(std::memory_order_relaxed);
@@ -92,21 +98,22 @@ public:
   }
 
 private:
-  // The boxes of `all` that may meet one of `some`: those that meet a cell of a grid that one of
-  // `some` meets, the cells as large as the largest of `some`. A pass over `all` with a few
-  // lookups each: the repair's rounds change a few triangles, and the box intersection with all
-  // of them sorted every box in every round (5 s of Harvard-Oxford's repair).
-  static std::vector<const Box*> boxes_near(const std::vector<const Box*>& some, const std::vector<Box>& all)
+  // The boxes of the triangles that may meet one of `some`: those that meet a cell of a grid that
+  // one of `some` meets, the cells as large as the largest of `some`. A pass over the triangles
+  // with a few lookups each, which keeps only the boxes near: the repair's rounds change a few
+  // triangles, and the box intersection with all of them sorted every box in every round (5 s of
+  // Harvard-Oxford's repair), and writing the boxes of all took 0.2 s a round.
+  std::vector<Box> boxes_near(const Points& X, const std::vector<Box>& some) const
   {
-    std::vector<const Box*> near;
+    std::vector<Box> near;
     double size = 0;
-    for(const Box* b : some)
+    for(const Box& b : some)
       for(int c = 0; c < 3; ++c)
-        size = (std::max)(size, b->max_coord(c) - b->min_coord(c));
+        size = (std::max)(size, b.max_coord(c) - b.min_coord(c));
     if(!(size > 0) || !std::isfinite(size))
     {
-      for(const Box& b : all)
-        near.push_back(&b);
+      for(std::size_t f = 0; f < m_triangles.size(); ++f)
+        near.push_back(box(X, f));
       return near;
     }
     using Cell = std::array<std::int64_t, 3>;
@@ -122,9 +129,9 @@ private:
     };
     std::vector<Cell> marked;
     Cell lo, hi, k;
-    for(const Box* b : some)
+    for(const Box& b : some)
     {
-      cells(*b, lo, hi);
+      cells(b, lo, hi);
       for(k[0] = lo[0]; k[0] <= hi[0]; ++k[0])
         for(k[1] = lo[1]; k[1] <= hi[1]; ++k[1])
           for(k[2] = lo[2]; k[2] <= hi[2]; ++k[2])
@@ -132,8 +139,9 @@ private:
     }
     std::sort(marked.begin(), marked.end());
     marked.erase(std::unique(marked.begin(), marked.end()), marked.end());
-    for(const Box& b : all)
+    for(std::size_t f = 0; f < m_triangles.size(); ++f)
     {
+      const Box b = box(X, f);
       // a box over many cells (a long triangle) is kept without looking them up
       bool meets = cells(b, lo, hi) > 64;
       for(k[0] = lo[0]; !meets && k[0] <= hi[0]; ++k[0])
@@ -141,7 +149,7 @@ private:
           for(k[2] = lo[2]; !meets && k[2] <= hi[2]; ++k[2])
             meets = std::binary_search(marked.begin(), marked.end(), k);
       if(meets)
-        near.push_back(&b);
+        near.push_back(b);
     }
     return near;
   }
