@@ -43,9 +43,10 @@ public:
   // triangles (all where `changed` is empty).
   std::vector<bool> find(const Points& X, const std::vector<bool>& changed) const
   {
-    // CGAL's parallel box intersection copies its ranges nine times over: pointers, as in CGAL's
-    // self-intersection test, not boxes (0.4 GB more on a map of 0.85 M triangles).
-    // all the boxes, or those of the `changed` triangles (`some`) and of the triangles near them
+    // The boxes of all the triangles, or those of the `changed` ones (`some`) and of the
+    // triangles near them. CGAL's parallel box intersection copies its ranges nine times over: it
+    // gets pointers, as in CGAL's self-intersection test, not boxes (0.4 GB more on a map of 0.85 M
+    // triangles).
     std::vector<Box> boxes, some;
     std::vector<const Box*> handles, near;
     if(changed.empty())
@@ -64,7 +65,8 @@ public:
           some.push_back(box(X, f));
       for(const Box& b : some)
         handles.push_back(&b);
-      boxes = boxes_near(X, some);
+      if(!some.empty())
+        boxes = boxes_near(X, some);
       for(const Box& b : boxes)
         near.push_back(&b);
     }
