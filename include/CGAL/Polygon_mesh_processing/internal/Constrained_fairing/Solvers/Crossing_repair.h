@@ -48,6 +48,13 @@ std::size_t repair_crossings_and_needles(const std::vector<std::array<Index, 3> 
 {
   const Triangle_crossings crossings(triangles);
   const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
+  // Where no point moved (no iteration), no triangle can cross that did not at the start: the
+  // search over the whole soup would take seconds on a large map to find nothing to pull.
+  bool any_moved = false;
+  for(std::size_t v = 0; v < n && !any_moved; ++v)
+    any_moved = point(X, v) != point(X0, v);
+  if(!any_moved)
+    return 0;
   std::vector<std::size_t> pulls(n, 0);
   std::size_t pulled = 0;
   std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), needle(m);
