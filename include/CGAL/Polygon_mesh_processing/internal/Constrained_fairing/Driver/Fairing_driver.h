@@ -135,7 +135,7 @@ Constrained_fairing_result run_fairing_driver(Input& input, double epsilon, cons
       .run(X0, energy, anchor, callback, X, result);
     if(!result)
       return;
-    input.repair(bound, moving, X0, X, energy, settings, result);
+    input.repair(mesh, bound, moving, X0, X, energy, settings, result);
 
     // report and write back; only moved points are written, the others keep their coordinates
     // exactly, even in an exact kernel

@@ -30,6 +30,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_type_config.h>
@@ -160,9 +161,11 @@ public:
       objective.add_fold_barrier(Fold_barrier(interface_fold_weight, interface_fold_angle));
   }
 
+  // The pulls may fold triangles again: the result counts the folds they leave.
   template <typename Bound>
-  void repair(const Bound& bound, const std::vector<bool>& moving, const Points& X0, Points& X,
-              Fairing_objective& objective, const Fairing_settings& settings, Constrained_fairing_result& result) const
+  void repair(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving, const Points& X0,
+              Points& X, Fairing_objective& objective, const Fairing_settings& settings,
+              Constrained_fairing_result& result) const
   {
     // Without the barrier, needles are the user's choice.
     const double smallest_sine =
@@ -171,6 +174,7 @@ public:
     {
       result.final_energy = objective.value(X);
       result.final_bending_energy = objective.bending_energy(X);
+      result.number_of_folded_faces = folded_moving_triangles(mesh, moving, X).size();
     }
   }
 

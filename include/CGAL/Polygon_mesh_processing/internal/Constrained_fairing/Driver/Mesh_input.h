@@ -163,7 +163,7 @@ public:
   }
 
   template <typename Bound>
-  void repair(const Bound&, const std::vector<bool>&, const Points&, Points&, Fairing_objective&,
+  void repair(const Hinge_mesh&, const Bound&, const std::vector<bool>&, const Points&, Points&, Fairing_objective&,
               const Fairing_settings&, Constrained_fairing_result&) const
   {}
 

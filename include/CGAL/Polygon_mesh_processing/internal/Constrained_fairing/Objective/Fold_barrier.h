@@ -12,7 +12,7 @@
 // so where the junction lines, the volumes and the boxes pull, a triangle turns over against its
 // neighbours at no great cost. On Debian's atlases 5 to 740 triangles ended turned over, most with
 // a point on a junction line, after the fold repair's re-seed and second descent had undone a
-// fifth of them; with P, none on seven of the nine and no second descent there
+// fifth of them; with P, the descent ends with none on seven of the nine and no second descent there
 // (doc/design_notes.md, "A barrier against folds on label surfaces"). P leaves every hinge turned
 // less than theta0 alone, so it changes no smooth part of the surface; like the bending energy it
 // is dimensionless and counts per hinge.

@@ -61,6 +61,20 @@ inline std::vector<Index> folded_triangles(const Hinge_mesh& mesh, const Points&
   return folded;
 }
 
+// The folded triangles of X with a `moving` vertex: those the result counts.
+inline std::vector<Index> folded_moving_triangles(const Hinge_mesh& mesh, const std::vector<bool>& moving,
+                                                  const Points& X)
+{
+  std::vector<Index> folded = folded_triangles(mesh, X);
+  folded.erase(std::remove_if(folded.begin(), folded.end(),
+                              [&](Index f) {
+                                const auto& t = mesh.triangles[f];
+                                return !moving[t[0]] && !moving[t[1]] && !moving[t[2]];
+                              }),
+               folded.end());
+  return folded;
+}
+
 // Re-seeds the vertices of the `folded` triangles and their neighbours in X, which stays
 // feasible.
 template <typename Bound>
@@ -107,16 +121,7 @@ Fold_count repair_folds(const Hinge_mesh& mesh, const Bound& bound, const std::v
                         const Descend& descend, const Solver_options& options, const Callback& callback, Points& X,
                         Solver_report& path)
 {
-  const auto folds = [&](const Points& Y) {
-    std::vector<Index> folded = folded_triangles(mesh, Y);
-    folded.erase(std::remove_if(folded.begin(), folded.end(),
-                                [&](Index f) {
-                                  const auto& t = mesh.triangles[f];
-                                  return !moving[t[0]] && !moving[t[1]] && !moving[t[2]];
-                                }),
-                 folded.end());
-    return folded;
-  };
+  const auto folds = [&](const Points& Y) { return folded_moving_triangles(mesh, moving, Y); };
   std::vector<Index> folded = folds(X);
   Fold_count count;
   count.before = folded.size();
