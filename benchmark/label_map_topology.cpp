@@ -6,10 +6,11 @@
 // their boxes, then each label's surface made by label_surface(); per map, the labels whose
 // surface is not closed, not a valid manifold made without splitting, not outward (volume), or
 // intersects itself (PMP::does_self_intersect); the pairs of distinct points at one position;
-// the points outside their boxes; the smallest angle; the iterations, the energy evaluations and
-// the time per iteration (the median of --runs calls, each on the unfaired nets), and that time
-// per triangle against a compact map's of about a million triangles faired first in the same run
-// (10 Voronoi labels in a ball, 256^3 voxels; --compact 0 leaves it out).
+// the points outside their boxes; the smallest angle; the folded triangles the result counts;
+// the iterations, the energy evaluations and the time per iteration (the median of --runs calls,
+// each on the unfaired nets), and that time per triangle against a compact map's of about a
+// million triangles faired first in the same run (10 Voronoi labels in a ball, 256^3 voxels;
+// --compact 0 leaves it out).
 //
 //   label_map_topology [--runs 3] [--threads K] [--margin M] [--compact 256] [FILE.nii[.gz] ...]
 //
@@ -119,7 +120,8 @@ void judge(const Map& map, bool compact = false)
   std::cout << std::left << std::setw(44) << map.name << std::right << std::setw(5) << labels.size() << std::setw(9)
             << triangles.size() << std::setw(6) << open << std::setw(6) << split << std::setw(7) << inward
             << std::setw(7) << crossing << std::setw(7) << coincident << std::setw(7) << outside << std::setw(7)
-            << std::setprecision(3) << smallest << std::setw(6) << result.number_of_iterations << std::setw(10)
+            << std::setprecision(3) << smallest << std::setw(6) << result.number_of_folded_faces << std::setw(6)
+            << result.number_of_iterations << std::setw(10)
             << std::setprecision(3) << per_iteration << std::setw(9) << std::setprecision(4) << seconds << std::setw(7)
             << result.number_of_energy_evaluations;
   const double per_triangle = per_iteration / double(triangles.size());
@@ -149,7 +151,7 @@ int main(int argc, char* argv[])
   runs = arguments.runs;
   std::cout << benchmark::machine_description() << ", boxes' margin " << box_margin << "\n"
             << std::left << std::setw(44) << "map" << std::right
-            << "labels triangles  open split inward crossing coinc. outside  angle iter.    s/iter  total s  evals  /compact"
+            << "labels triangles  open split inward crossing coinc. outside  angle folds iter.    s/iter  total s  evals  /compact"
             << std::endl;
   if(const auto n = std::size_t(std::stoi(arguments.option("compact", "256"))); n > 0)
     judge(Map{"compact: 10 Voronoi labels, " + std::to_string(n) + "^3", {n, n, n}, {1, 1, 1},

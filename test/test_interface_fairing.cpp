@@ -385,28 +385,37 @@ void check_smallest_angle_sine()
 // within their boxes, nearly flat so that many triangles turn over onto their neighbours, as a
 // descent that folded it might leave them, some points held; on a flat grid and on one with a
 // squashed column of needles at the start. No crossing is left; every point stays in its box, at
-// its start or pulled halfway back some times; and every triangle ends with its smallest angle
-// at least the repair's angle or its start's, which the pulls of crossings alone do not keep. A
-// soup with nothing to repair is left bit for bit.
+// its start or pulled halfway back some times; every triangle ends with its smallest angle at
+// least the repair's angle or its start's, and none folded, which the pulls of crossings alone do
+// not keep. A soup with nothing to repair is left bit for bit.
 void check_crossing_repair()
 {
   namespace CF = PMP::internal::Constrained_fairing;
   const std::size_t n = 25;
   const double half = 0.45, smallest_sine = std::sin(CF::interface_repair_angle * CGAL_PI / 180);
   std::vector<std::array<CF::Index, 3> > triangles;
+  std::vector<std::array<CF::Index, 2> > hinge_faces;
   for(std::size_t i = 0; i + 1 < n; ++i)
     for(std::size_t j = 0; j + 1 < n; ++j)
     {
       const CF::Index a = CF::Index(i * n + j), b = a + 1, c = CF::Index(a + n), d = c + 1;
+      const CF::Index f = CF::Index(triangles.size());
       triangles.push_back({a, c, d}), triangles.push_back({a, d, b});
+      hinge_faces.push_back({f, f + 1}); // the diagonal a-d
+      if(j + 2 < n)
+        hinge_faces.push_back({f + 1, f + 2}); // b-d, with the square of the next j
+      if(i + 2 < n)
+        hinge_faces.push_back({f, f + 2 * CF::Index(n - 1) + 1}); // c-d, with that of the next i
     }
+  const CF::Hinge_mesh mesh(n * n, triangles, hinge_faces);
+  CHECK(mesh.hinges.size() == hinge_faces.size());
   const CF::Triangle_crossings crossings(triangles);
   std::vector<bool> moving(n * n);
   for(std::size_t v = 0; v < n * n; ++v)
     moving[v] = v % 7 != 3;
   std::mt19937 random(3);
   std::uniform_real_distribution<double> offset(-half, half), lift(-0.05, 0.05);
-  std::size_t crossed = 0, needles_at_start = 0, worse_without = 0;
+  std::size_t crossed = 0, folded = 0, needles_at_start = 0, worse_without = 0, folded_without = 0;
   for(int trial = 0; trial < 20; ++trial)
   {
     // Odd trials start with column 12 squashed against column 11: needles at the start.
@@ -416,6 +425,7 @@ void check_crossing_repair()
         X0.row(Eigen::Index(i * n + j)) << (trial % 2 == 1 && i == 12 ? 11.05 : double(i)), double(j), 0.;
     for(const auto& t : triangles)
       needles_at_start += CF::smallest_angle_sine(X0, t) < smallest_sine;
+    CHECK(CF::folded_triangles(mesh, X0).empty());
     const CF::Box_bound bound(X0, half);
     CF::Points thrown = X0;
     for(std::size_t v = 0; v < n * n; ++v)
@@ -423,10 +433,11 @@ void check_crossing_repair()
         thrown.row(Eigen::Index(v)) += Eigen::RowVector3d(offset(random), offset(random), lift(random));
     const std::vector<bool> at_throw = crossings.find(thrown, {});
     crossed += std::size_t(std::count(at_throw.begin(), at_throw.end(), true));
+    folded += CF::folded_triangles(mesh, thrown).size();
     for(const double sine : {smallest_sine, 0.})
     {
       CF::Points X = thrown;
-      CF::repair_crossings_and_needles(triangles, bound, moving, sine, X0, X);
+      CF::repair_crossings_needles_and_folds(mesh, bound, moving, sine, X0, X);
       const std::vector<bool> crossing = crossings.find(X, {});
       CHECK(std::count(crossing.begin(), crossing.end(), true) == 0);
       for(Eigen::Index v = 0; v < X.rows(); ++v)
@@ -438,6 +449,7 @@ void check_crossing_repair()
         for(int c = 0; c < 3; ++c)
           CHECK(std::abs(X(v, c) - X0(v, c)) <= half);
       }
+      const std::size_t folds = CF::folded_triangles(mesh, X).size();
       for(const auto& t : triangles)
       {
         const bool kept = CF::smallest_angle_sine(X, t) >= (std::min)(smallest_sine, CF::smallest_angle_sine(X0, t));
@@ -446,24 +458,31 @@ void check_crossing_repair()
         else
           worse_without += !kept;
       }
+      if(sine > 0)
+        CHECK(folds == 0);
+      else
+        folded_without += folds;
     }
     if(trial % 2 == 1)
       continue;
-    // The flat grid lifted as a whole but for its held points: nothing crosses, no needle.
+    // The flat grid lifted as a whole but for its held points: nothing crosses, no needle, no fold.
     CF::Points X = X0;
     for(std::size_t v = 0; v < n * n; ++v)
       if(moving[v])
         X(Eigen::Index(v), 2) += 0.3;
     const CF::Points lifted = X;
-    CHECK(CF::repair_crossings_and_needles(triangles, bound, moving, smallest_sine, X0, X) == 0);
+    CHECK(CF::repair_crossings_needles_and_folds(mesh, bound, moving, smallest_sine, X0, X) == 0);
     CHECK((X.array() == lifted.array()).all());
   }
-  std::cout << "  crossing repair: " << crossed << " crossing triangles thrown, none left; " << needles_at_start
-            << " needles at the start kept; " << worse_without
-            << " needles left by the pulls of crossings alone, none with the angle" << std::endl;
+  std::cout << "  crossing repair: " << crossed << " crossing triangles and " << folded
+            << " folded ones thrown, none left; " << needles_at_start << " needles at the start kept; "
+            << worse_without << " needles and " << folded_without
+            << " folds left by the pulls of crossings alone, none with the angle and the folds" << std::endl;
   CHECK(crossed > 0);
+  CHECK(folded > 0);
   CHECK(needles_at_start > 0);
   CHECK(worse_without > 0);
+  CHECK(folded_without > 0);
 }
 
 // A call that must fail with `defect`, leaving the points as they were.

@@ -44,11 +44,13 @@ that ends a junction line or where lines branch, and a point where four labels o
 not move.
 
 After the descent, the points of a triangle that passes through another, where it crossed none in
-the input, and those of a triangle whose smallest angle is under both 5 degrees and its own in the
-input, are pulled back towards their input positions, halfway at each of a point's first six
-pulls and all the way at its seventh: two triangles of the faired soup cross only where one of
-them crossed a triangle in the input, and no triangle's smallest angle is under both 5 degrees
-and its input's (with `sliver_barrier_weight(0)`, the crossings alone).
+the input, those of a triangle whose smallest angle is under both 5 degrees and its own in the
+input, and those of a triangle turned over against its neighbours (its normal opposite the sum of
+theirs) that was not in the input, with its neighbours' points, are pulled back towards their
+input positions, halfway at each of a point's first six pulls and all the way at its seventh: two
+triangles of the faired soup cross only where one of them crossed a triangle in the input, no
+triangle's smallest angle is under both 5 degrees and its input's, and a triangle is turned over
+only where it was in the input (with `sliver_barrier_weight(0)`, the crossings alone).
 
 The bound and the contract are those of `constrained_fairing()`, with the points numbered in
 `points`: the per-point maps are property maps whose key is a point's index (`std::size_t`);

@@ -11,7 +11,8 @@
 //  - its objective adds the junction lines' term (Curve_bending.h), the labels' volumes
 //    (Label_volumes.h), each label's held at its input value, and a barrier against folds
 //    (Fold_barrier.h); its barrier against slivers pushes back needles of a larger angle;
-//  - after the descent, the points of triangles that cross are pulled back (Crossing_repair.h).
+//  - after the descent, the points of triangles that cross, of needles and of folds are pulled
+//    back (Crossing_repair.h).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
@@ -161,16 +162,16 @@ public:
       objective.add_fold_barrier(Fold_barrier(interface_fold_weight, interface_fold_angle));
   }
 
-  // The pulls may fold triangles again: the result counts the folds they leave.
+  // The result counts the folds left after the pulls (with the barrier, only the start's).
   template <typename Bound>
   void repair(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving, const Points& X0,
               Points& X, Fairing_objective& objective, const Fairing_settings& settings,
               Constrained_fairing_result& result) const
   {
-    // Without the barrier, needles are the user's choice.
+    // Without the barrier, needles and folds are the user's choice.
     const double smallest_sine =
       settings.sliver_barrier_weight > 0 ? std::sin(interface_repair_angle * CGAL_PI / 180) : 0;
-    if(repair_crossings_and_needles(m_oriented, bound, moving, smallest_sine, X0, X) > 0)
+    if(repair_crossings_needles_and_folds(mesh, bound, moving, smallest_sine, X0, X) > 0)
     {
       result.final_energy = objective.value(X);
       result.final_bending_energy = objective.bending_energy(X);

@@ -1,20 +1,19 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Folds: triangles turned over against their neighbours, n . (n1 + n2 + n3) < 0 with n the
-// triangle's area-weighted normal and n1..n3 those of its neighbours across the hinges of the
-// energy. At heavy noise the descent keeps some of the input's: no step may flip or collapse a
-// triangle (Projected_lbfgs.h limits each move to a tenth of the vertex's reach), so a triangle
-// folded at the start stays folded, held there by the bound and by its neighbours, a local
-// minimum of the energy. The repair re-seeds the vertices of the folded triangles and of
-// their neighbours: a few projected Laplacian steps on them alone, each vertex moved to the
-// mean of its neighbours and back into its bound, which opens the fold since the bound allows
-// the flat configuration around it; it then descends again from there and keeps the outcome
-// only if its objective ends lower.
+// Folds (Folded_triangles.h) left by the descent. At heavy noise the descent keeps some of the
+// input's: no step may flip or collapse a triangle (Projected_lbfgs.h limits each move to a tenth
+// of the vertex's reach), so a triangle folded at the start stays folded, held there by the bound
+// and by its neighbours, a local minimum of the energy. The repair re-seeds the vertices of the
+// folded triangles and of their neighbours: a few projected Laplacian steps on them alone, each
+// vertex moved to the mean of its neighbours and back into its bound, which opens the fold since
+// the bound allows the flat configuration around it; it then descends again from there and keeps
+// the outcome only if its objective ends lower.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FOLD_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FOLD_REPAIR_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
@@ -44,36 +43,6 @@ constexpr std::size_t fold_repair_rounds = 3;
 // demo data, seven atlases of mricron-data; doc/design_notes.md, "Fold repair and what the
 // callback hears").
 constexpr double fold_repair_share = 0.5;
-
-// The folded triangles of X.
-inline std::vector<Index> folded_triangles(const Hinge_mesh& mesh, const Points& X)
-{
-  std::vector<Eigen::Vector3d> around(mesh.triangles.size(), Eigen::Vector3d::Zero());
-  for(const Hinge& h : mesh.hinges)
-  {
-    around[h.f[0]] += area_normal(mesh, X, h.f[1]);
-    around[h.f[1]] += area_normal(mesh, X, h.f[0]);
-  }
-  std::vector<Index> folded;
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    if(area_normal(mesh, X, f).dot(around[f]) < 0)
-      folded.push_back(static_cast<Index>(f));
-  return folded;
-}
-
-// The folded triangles of X with a `moving` vertex: those the result counts.
-inline std::vector<Index> folded_moving_triangles(const Hinge_mesh& mesh, const std::vector<bool>& moving,
-                                                  const Points& X)
-{
-  std::vector<Index> folded = folded_triangles(mesh, X);
-  folded.erase(std::remove_if(folded.begin(), folded.end(),
-                              [&](Index f) {
-                                const auto& t = mesh.triangles[f];
-                                return !moving[t[0]] && !moving[t[1]] && !moving[t[2]];
-                              }),
-               folded.end());
-  return folded;
-}
 
 // Re-seeds the vertices of the `folded` triangles and their neighbours in X, which stays
 // feasible.
