@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Junction_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Interface_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
@@ -31,7 +32,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Fold_repair.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_type_config.h>

@@ -21,7 +21,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Solver_report.h>
 
-#include <algorithm>
 #include <cstddef>
 #include <vector>
 
