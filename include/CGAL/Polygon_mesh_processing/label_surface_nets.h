@@ -78,10 +78,12 @@ outside the array count as `background`.
 - Points of cells of several points, at the centres of their boxes, can fold a triangle onto its
   neighbour or through another: the points of such triangles, of any cell, move to the mean of
   their neighbours (with the points around them after the first round), within seven eighths
-  of their boxes, for a few rounds while some cross, and
-  each moved point's box shrinks to the largest one around it within the one it had (up to
-  rounding). The triangles pass through each other only where that fails (none on Debian's
-  atlases).
+  of their boxes, for a few rounds while some cross; then those of the triangles still crossing,
+  one at a time, each to the position of a grid over that part of its box that leaves the
+  fewest crossings, and of those the least sharp triangles (up to a 6-degree needle), then the
+  nearest, never adding a crossing. Each moved point's box shrinks to the largest one around it
+  within the one it had (up to rounding). The triangles pass through each other only where
+  that fails: none on Debian's atlases, 2 of 100 maps of 14^3 random voxels of 3 to 6 labels.
 - A face whose corners hold several points is cut into triangles by diagonals between opposite
   cells where it can be, else, for the rest, the way whose triangles turn least from its normal,
   never into a triangle or a diagonal another face has.

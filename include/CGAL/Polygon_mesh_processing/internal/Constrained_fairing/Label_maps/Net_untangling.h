@@ -10,10 +10,13 @@
 // they start. So the points of crossing triangles (from the second round on, with their
 // neighbours) move to the mean of their neighbours (Neighbour_mean, Mesh_operators.h), clamped
 // to the boxes they had less untangling_room, round after round (untangling_rounds) while some
-// cross; each moved point's box then shrinks to the largest one around it within the old. The
-// first search is among the triangles with a point of a split cell (a cell of several points)
-// only: the others, at the centres of their cells, are faces of the dual grid, which never
-// cross; later ones among those that crossed or have a moved point.
+// cross. Where a mean stalls (points of several sheets pressed together near a cell's centre),
+// the points of the triangles still crossing then search their boxes one at a time
+// (search_uncrossed_positions): a move never adds a crossing. Each moved point's box then
+// shrinks to the largest one around it within the old. The first search for crossings is among
+// the triangles with a point of a split cell (a cell of several points) only: the others, at the
+// centres of their cells, are faces of the dual grid, which never cross; later ones among those
+// that crossed or have a moved point.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
@@ -22,11 +25,16 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
+#include <CGAL/Bbox_3.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -42,6 +50,140 @@ constexpr std::size_t untangling_rounds = 8;
 // every axis (a quarter left 26 crossing triangles on natbrainlab, nothing left boxes of no
 // extent).
 constexpr double untangling_room = 0.125;
+
+// The search after the rounds: the positions it tries for a point, a grid of
+// untangling_grid + 1 per axis over its box less the room; the passes over the points of the
+// triangles still crossing; and the angle, in degrees, under which it prefers wider triangles
+// (the needles the barrier pushes back on label surfaces, Fairing_settings.h). On 100 maps of
+// 14^3 random voxels of 3 to 6 labels, the rounds left 1,690 crossing triangles on 94 of them,
+// the search 8 on 2; faired, the labels that cross themselves went from 150 to 3 and the
+// smallest angles' geometric mean from 4.20 to 4.23 degrees (design notes).
+constexpr int untangling_grid = 4;
+constexpr std::size_t untangling_passes = 10;
+constexpr double untangling_needle_angle = 6;
+
+// The triangles (of `triangles` in X) whose boxes meet each of `regions`, in increasing order.
+inline std::vector<std::vector<std::size_t> > triangles_meeting(const Points& X,
+                                                                 const std::vector<std::array<Index, 3> >& triangles,
+                                                                 const std::vector<Bbox_3>& regions)
+{
+  using Box = Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::vector<Box> region_boxes, triangle_boxes;
+  for(std::size_t r = 0; r < regions.size(); ++r)
+    region_boxes.emplace_back(regions[r], r);
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    Bbox_3 b;
+    for(Index v : triangles[f])
+      b += Bbox_3(X(v, 0), X(v, 1), X(v, 2), X(v, 0), X(v, 1), X(v, 2));
+    triangle_boxes.emplace_back(b, f);
+  }
+  std::vector<std::vector<std::size_t> > meeting(regions.size());
+  box_intersection_d<Sequential_tag>(region_boxes.begin(), region_boxes.end(), triangle_boxes.begin(),
+                                     triangle_boxes.end(),
+                                     [&meeting](const Box& r, const Box& f) { meeting[r.info()].push_back(f.info()); });
+  for(auto& list : meeting)
+    std::sort(list.begin(), list.end());
+  return meeting;
+}
+
+// The points of the `crossing` triangles, one after the other, each moved to the position of a
+// grid over its box [low, high] that leaves the fewest crossings between its triangles and
+// those near; of those, the one whose triangles' smallest angle is largest, up to
+// untangling_needle_angle; of those, the nearest. Its present position competes too, so that
+// no move adds a crossing. Passes while some cross and some point moves; `crossing` is updated
+// and the moved points are marked in `moved`.
+inline void search_uncrossed_positions(Points& X, const Points& low, const Points& high,
+                                       const std::vector<std::array<Index, 3> >& triangles,
+                                       const Triangle_crossings& crossings, std::vector<bool>& crossing,
+                                       std::vector<bool>& moved)
+{
+  const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
+  const double needle_sine = std::sin(untangling_needle_angle * CGAL_PI / 180);
+  std::vector<std::vector<std::size_t> > star(n);
+  for(std::size_t f = 0; f < m; ++f)
+    for(Index v : triangles[f])
+      star[v].push_back(f);
+  const auto box_of = [&](std::size_t f) {
+    Bbox_3 b;
+    for(Index v : triangles[f])
+      b += Bbox_3(X(v, 0), X(v, 1), X(v, 2), X(v, 0), X(v, 1), X(v, 2));
+    return b;
+  };
+  for(std::size_t pass = 0; pass < untangling_passes; ++pass)
+  {
+    std::vector<Index> points;
+    for(std::size_t f = 0; f < m; ++f)
+      if(crossing[f])
+        points.insert(points.end(), triangles[f].begin(), triangles[f].end());
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if(points.empty())
+      return;
+    // Where each point's triangles can reach: its box and its neighbours.
+    std::vector<Bbox_3> regions;
+    for(Index v : points)
+    {
+      Bbox_3 region(low(v, 0), low(v, 1), low(v, 2), high(v, 0), high(v, 1), high(v, 2));
+      for(std::size_t f : star[v])
+        region += box_of(f);
+      regions.push_back(region);
+    }
+    const std::vector<std::vector<std::size_t> > near = triangles_meeting(X, triangles, regions);
+    bool any = false;
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      const Index v = points[k];
+      const Eigen::Vector3d start = point(X, v);
+      // (crossings, minus the smallest sine up to the needle's, squared distance): the smaller the better
+      const auto score = [&]() {
+        int count = 0;
+        double sine = needle_sine;
+        for(std::size_t f : star[v])
+        {
+          const Bbox_3 b = box_of(f);
+          for(std::size_t g : near[k])
+            if(g != f && do_overlap(b, box_of(g)) && Triangle_crossings::cross(X, triangles[f], triangles[g]))
+              ++count;
+          for(std::size_t c = 0; c < 3; ++c)
+          {
+            const Eigen::Vector3d a = point(X, triangles[f][c]), e1 = point(X, triangles[f][(c + 1) % 3]) - a,
+                                  e2 = point(X, triangles[f][(c + 2) % 3]) - a;
+            const double lengths = e1.norm() * e2.norm();
+            sine = (std::min)(sine, lengths > 0 ? e1.cross(e2).norm() / lengths : 0.);
+          }
+        }
+        return std::make_tuple(count, -sine, (point(X, v) - start).squaredNorm());
+      };
+      auto best = score();
+      Eigen::Vector3d best_position = start;
+      for(int i = 0; i <= untangling_grid; ++i)
+        for(int j = 0; j <= untangling_grid; ++j)
+          for(int l = 0; l <= untangling_grid; ++l)
+          {
+            const int steps[3] = {i, j, l};
+            for(int c = 0; c < 3; ++c)
+              X(v, c) = low(v, c) + (high(v, c) - low(v, c)) * steps[c] / untangling_grid;
+            const auto s = score();
+            if(s < best)
+            {
+              best = s;
+              best_position = point(X, v);
+            }
+          }
+      point(X, v) = best_position;
+      if(best_position != start)
+        any = moved[v] = true;
+    }
+    if(!any)
+      return;
+    std::vector<bool> changed = crossing;
+    for(Index v : points)
+      for(std::size_t f : star[v])
+        changed[f] = true;
+    crossing = crossings.find(X, changed);
+  }
+}
 
 // Untangles the points [first_point, ...) of `points` with their boxes [first_box, ...) of
 // `half_extents`, the triangles [first_triangle, ...) of `triangles` indexing them;
@@ -106,6 +248,7 @@ void untangle_nets(PointRange& points, const TriangleRange& triangles, BoxRange&
       changed[f] = crossing[f] || moved[local[f][0]] || moved[local[f][1]] || moved[local[f][2]];
     crossing = crossings.find(X, changed);
   }
+  search_uncrossed_positions(X, low, high, local, crossings, crossing, moved_ever);
 
   for(std::size_t v = 0; v < n; ++v)
     if(moved_ever[v])

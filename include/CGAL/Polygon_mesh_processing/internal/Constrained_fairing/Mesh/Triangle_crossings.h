@@ -99,6 +99,39 @@ public:
     return crossing;
   }
 
+  // Whether triangles s and t of X pass through each other (the test of `find`).
+  static bool cross(const Points& X, const std::array<Index, 3>& s, const std::array<Index, 3>& t)
+  {
+    const auto p = [&X](Index v) { return Kernel::Point_3(X(v, 0), X(v, 1), X(v, 2)); };
+    // A triangle collapsed to a segment has no side: it counts as crossing, to be pulled back.
+    if(collinear(p(s[0]), p(s[1]), p(s[2])) || collinear(p(t[0]), p(t[1]), p(t[2])))
+      return true;
+    int shared = 0, i = 0, j = 0;
+    for(int a = 0; a < 3; ++a)
+      for(int b = 0; b < 3; ++b)
+        if(s[std::size_t(a)] == t[std::size_t(b)])
+          ++shared, i = a, j = b;
+    if(shared >= 2)
+    {
+      // The third points of s and t, on the same side of the shared edge in one plane.
+      int a = 0, b = 0;
+      while(a < 3 && (s[std::size_t(a)] == t[0] || s[std::size_t(a)] == t[1] || s[std::size_t(a)] == t[2]))
+        ++a;
+      while(b < 3 && (t[std::size_t(b)] == s[0] || t[std::size_t(b)] == s[1] || t[std::size_t(b)] == s[2]))
+        ++b;
+      if(a == 3 || b == 3)
+        return true; // one triangle twice
+      const Kernel::Point_3 u = p(s[std::size_t((a + 1) % 3)]), v = p(s[std::size_t((a + 2) % 3)]);
+      return coplanar(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) &&
+             coplanar_orientation(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) == POSITIVE;
+    }
+    const Kernel::Triangle_3 S(p(s[0]), p(s[1]), p(s[2])), T(p(t[0]), p(t[1]), p(t[2]));
+    if(shared == 1)
+      return do_intersect(S, Kernel::Segment_3(p(t[std::size_t((j + 1) % 3)]), p(t[std::size_t((j + 2) % 3)]))) ||
+             do_intersect(T, Kernel::Segment_3(p(s[std::size_t((i + 1) % 3)]), p(s[std::size_t((i + 2) % 3)])));
+    return do_intersect(S, T);
+  }
+
 private:
   // The boxes of the triangles that may meet one of `some`: those that meet a cell of a grid that
   // one of `some` meets, the cells as large as the largest of `some`. A pass over the triangles
@@ -169,38 +202,6 @@ private:
       }
     }
     return Box(Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), f);
-  }
-
-  static bool cross(const Points& X, const std::array<Index, 3>& s, const std::array<Index, 3>& t)
-  {
-    const auto p = [&X](Index v) { return Kernel::Point_3(X(v, 0), X(v, 1), X(v, 2)); };
-    // A triangle collapsed to a segment has no side: it counts as crossing, to be pulled back.
-    if(collinear(p(s[0]), p(s[1]), p(s[2])) || collinear(p(t[0]), p(t[1]), p(t[2])))
-      return true;
-    int shared = 0, i = 0, j = 0;
-    for(int a = 0; a < 3; ++a)
-      for(int b = 0; b < 3; ++b)
-        if(s[std::size_t(a)] == t[std::size_t(b)])
-          ++shared, i = a, j = b;
-    if(shared >= 2)
-    {
-      // The third points of s and t, on the same side of the shared edge in one plane.
-      int a = 0, b = 0;
-      while(a < 3 && (s[std::size_t(a)] == t[0] || s[std::size_t(a)] == t[1] || s[std::size_t(a)] == t[2]))
-        ++a;
-      while(b < 3 && (t[std::size_t(b)] == s[0] || t[std::size_t(b)] == s[1] || t[std::size_t(b)] == s[2]))
-        ++b;
-      if(a == 3 || b == 3)
-        return true; // one triangle twice
-      const Kernel::Point_3 u = p(s[std::size_t((a + 1) % 3)]), v = p(s[std::size_t((a + 2) % 3)]);
-      return coplanar(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) &&
-             coplanar_orientation(u, v, p(s[std::size_t(a)]), p(t[std::size_t(b)])) == POSITIVE;
-    }
-    const Kernel::Triangle_3 S(p(s[0]), p(s[1]), p(s[2])), T(p(t[0]), p(t[1]), p(t[2]));
-    if(shared == 1)
-      return do_intersect(S, Kernel::Segment_3(p(t[std::size_t((j + 1) % 3)]), p(t[std::size_t((j + 2) % 3)]))) ||
-             do_intersect(T, Kernel::Segment_3(p(s[std::size_t((i + 1) % 3)]), p(s[std::size_t((i + 2) % 3)])));
-    return do_intersect(S, T);
   }
 
   const std::vector<std::array<Index, 3> >& m_triangles;
