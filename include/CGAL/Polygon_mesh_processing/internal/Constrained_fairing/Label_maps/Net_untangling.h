@@ -34,7 +34,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -99,6 +101,8 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
                                        std::vector<bool>& moved)
 {
   const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
+  if(std::find(crossing.begin(), crossing.end(), true) == crossing.end())
+    return;
   const double needle_sine = std::sin(untangling_needle_angle * CGAL_PI / 180);
   std::vector<std::vector<std::size_t> > star(n);
   for(std::size_t f = 0; f < m; ++f)
@@ -135,16 +139,27 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
     {
       const Index v = points[k];
       const Eigen::Vector3d start = point(X, v);
-      // (crossings, minus the smallest sine up to the needle's, squared distance): the smaller the better
-      const auto score = [&]() {
+      // The triangles near without v, whose boxes stay as v moves.
+      std::vector<std::pair<std::size_t, Bbox_3> > still;
+      for(std::size_t g : near[k])
+        if(triangles[g][0] != v && triangles[g][1] != v && triangles[g][2] != v)
+          still.emplace_back(g, box_of(g));
+      // (crossings, minus the smallest sine up to the needle's, squared distance): the smaller the
+      // better; the count stops once over `limit`, where the position loses anyway.
+      const auto score = [&](int limit) {
         int count = 0;
         double sine = needle_sine;
         for(std::size_t f : star[v])
         {
           const Bbox_3 b = box_of(f);
-          for(std::size_t g : near[k])
+          for(const auto& g : still)
+            if(do_overlap(b, g.second) && Triangle_crossings::cross(X, triangles[f], triangles[g.first]))
+              ++count;
+          for(std::size_t g : star[v])
             if(g != f && do_overlap(b, box_of(g)) && Triangle_crossings::cross(X, triangles[f], triangles[g]))
               ++count;
+          if(count > limit)
+            break;
           for(std::size_t c = 0; c < 3; ++c)
           {
             const Eigen::Vector3d a = point(X, triangles[f][c]), e1 = point(X, triangles[f][(c + 1) % 3]) - a,
@@ -155,7 +170,7 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
         }
         return std::make_tuple(count, -sine, (point(X, v) - start).squaredNorm());
       };
-      auto best = score();
+      auto best = score((std::numeric_limits<int>::max)());
       Eigen::Vector3d best_position = start;
       for(int i = 0; i <= untangling_grid; ++i)
         for(int j = 0; j <= untangling_grid; ++j)
@@ -164,7 +179,7 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
             const int steps[3] = {i, j, l};
             for(int c = 0; c < 3; ++c)
               X(v, c) = low(v, c) + (high(v, c) - low(v, c)) * steps[c] / untangling_grid;
-            const auto s = score();
+            const auto s = score(std::get<0>(best));
             if(s < best)
             {
               best = s;
