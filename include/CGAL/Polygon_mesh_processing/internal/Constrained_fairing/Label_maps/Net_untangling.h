@@ -64,22 +64,16 @@ constexpr int untangling_grid = 4;
 constexpr std::size_t untangling_passes = 10;
 constexpr double untangling_needle_angle = 6;
 
-// The triangles (of `triangles` in X) whose boxes meet each of `regions`, in increasing order.
-inline std::vector<std::vector<std::size_t> > triangles_meeting(const Points& X,
-                                                                 const std::vector<std::array<Index, 3> >& triangles,
+// The triangles whose `reach` (the box of each) meets each of `regions`, in increasing order.
+inline std::vector<std::vector<std::size_t> > triangles_meeting(const std::vector<Bbox_3>& reach,
                                                                  const std::vector<Bbox_3>& regions)
 {
   using Box = Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
   std::vector<Box> region_boxes, triangle_boxes;
   for(std::size_t r = 0; r < regions.size(); ++r)
     region_boxes.emplace_back(regions[r], r);
-  for(std::size_t f = 0; f < triangles.size(); ++f)
-  {
-    Bbox_3 b;
-    for(Index v : triangles[f])
-      b += Bbox_3(X(v, 0), X(v, 1), X(v, 2), X(v, 0), X(v, 1), X(v, 2));
-    triangle_boxes.emplace_back(b, f);
-  }
+  for(std::size_t f = 0; f < reach.size(); ++f)
+    triangle_boxes.emplace_back(reach[f], f);
   std::vector<std::vector<std::size_t> > meeting(regions.size());
   box_intersection_d<Sequential_tag>(region_boxes.begin(), region_boxes.end(), triangle_boxes.begin(),
                                      triangle_boxes.end(),
@@ -114,6 +108,11 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
       b += Bbox_3(X(v, 0), X(v, 1), X(v, 2), X(v, 0), X(v, 1), X(v, 2));
     return b;
   };
+  // Where each triangle can be while its points move in their boxes (every point is in its own).
+  std::vector<Bbox_3> reach(m);
+  for(std::size_t f = 0; f < m; ++f)
+    for(Index v : triangles[f])
+      reach[f] += Bbox_3(low(v, 0), low(v, 1), low(v, 2), high(v, 0), high(v, 1), high(v, 2));
   for(std::size_t pass = 0; pass < untangling_passes; ++pass)
   {
     std::vector<Index> points;
@@ -124,16 +123,17 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
     points.erase(std::unique(points.begin(), points.end()), points.end());
     if(points.empty())
       return;
-    // Where each point's triangles can reach: its box and its neighbours.
+    // The triangles that may meet each point's as the points of the pass move: a move is judged
+    // against all of them, so that it never adds a crossing.
     std::vector<Bbox_3> regions;
     for(Index v : points)
     {
-      Bbox_3 region(low(v, 0), low(v, 1), low(v, 2), high(v, 0), high(v, 1), high(v, 2));
+      Bbox_3 region;
       for(std::size_t f : star[v])
-        region += box_of(f);
+        region += reach[f];
       regions.push_back(region);
     }
-    const std::vector<std::vector<std::size_t> > near = triangles_meeting(X, triangles, regions);
+    const std::vector<std::vector<std::size_t> > near = triangles_meeting(reach, regions);
     bool any = false;
     for(std::size_t k = 0; k < points.size(); ++k)
     {
