@@ -21,6 +21,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NET_UNTANGLING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
@@ -160,13 +161,7 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
               ++count;
           if(count > limit)
             break;
-          for(std::size_t c = 0; c < 3; ++c)
-          {
-            const Eigen::Vector3d a = point(X, triangles[f][c]), e1 = point(X, triangles[f][(c + 1) % 3]) - a,
-                                  e2 = point(X, triangles[f][(c + 2) % 3]) - a;
-            const double lengths = e1.norm() * e2.norm();
-            sine = (std::min)(sine, lengths > 0 ? e1.cross(e2).norm() / lengths : 0.);
-          }
+          sine = (std::min)(sine, smallest_angle_sine(X, triangles[f]));
         }
         return std::make_tuple(count, -sine, (point(X, v) - start).squaredNorm());
       };
