@@ -12,7 +12,9 @@
 // raw and the faired points on one surface. Then the ratios of the raw nets and of the clamp
 // (at its best count there) to the default fairing measured on the faces, the surface users
 // see: a surface whose faces are chords of a curved one, holding its volume, has its points
-// outside it.
+// outside it. Last, on the points of one surface, the ratio of the raw nets to the default, and
+// the same with the default's mean offset taken away per band of the true normal's tilt to the
+// slices: how close a fix of the offsets alone (a label's volume, a cap's height) could come.
 //
 //   label_phantoms [--threads K] [--margin M]
 
@@ -88,6 +90,15 @@ struct Phantom
     return std::sqrt(sum);
   }
 
+  // The region whose zero set is point v's interface, where v lies on one surface only, else null.
+  const Distance* surface_of(const Soup& soup, std::size_t v) const
+  {
+    if(soup.around[v].size() != 2)
+      return nullptr;
+    const Label l = soup.around[v].count(0) ? *soup.around[v].rbegin() : *soup.around[v].begin();
+    return &regions[std::size_t(l - 1)];
+  }
+
   // The mean signed distance of the points on one surface (positive outside its region): how
   // far a method moves the surfaces outwards, as the bending energy does to tubes.
   double bias(const Soup& soup, const std::vector<Point>& P) const
@@ -95,10 +106,9 @@ struct Phantom
     double sum = 0;
     std::size_t count = 0;
     for(std::size_t v = 0; v < P.size(); ++v)
-      if(soup.around[v].size() == 2)
+      if(const Distance* region = surface_of(soup, v))
       {
-        const Label l = soup.around[v].count(0) ? *soup.around[v].rbegin() : *soup.around[v].begin();
-        sum += regions[std::size_t(l - 1)]({P[v].x(), P[v].y(), P[v].z()});
+        sum += (*region)({P[v].x(), P[v].y(), P[v].z()});
         ++count;
       }
     return sum / double((std::max)(count, std::size_t(1)));
@@ -125,6 +135,41 @@ struct Phantom
       area += A;
     }
     return std::sqrt(sum / area);
+  }
+
+  // The RMS distance of the points on one surface, and the same with the mean signed distance
+  // of each band of them taken away, the bands those whose true normal is within 30 degrees of
+  // the slices' normal (the caps), 30 to 60 degrees, and further: at best what a method that
+  // knew the truth's offsets, a label's volume or a cap's height, could remove from the error.
+  std::array<double, 2> one_surface_rms(const Soup& soup, const std::vector<Point>& P) const
+  {
+    std::array<double, 3> sum{0, 0, 0}, squares{0, 0, 0}, count{0, 0, 0};
+    for(std::size_t v = 0; v < P.size(); ++v)
+      if(const Distance* surface = surface_of(soup, v))
+      {
+        const Distance& region = *surface;
+        const Vec p{P[v].x(), P[v].y(), P[v].z()};
+        const double step = 1e-5;
+        Vec normal;
+        for(std::size_t c = 0; c < 3; ++c)
+        {
+          Vec a = p, b = p;
+          a[c] += step, b[c] -= step;
+          normal[c] = region(a) - region(b);
+        }
+        const double cosine = std::abs(unit(normal)[2]);
+        const std::size_t band = cosine > std::cos(CGAL_PI / 6) ? 0 : cosine > std::cos(CGAL_PI / 3) ? 1 : 2;
+        const double d = region(p);
+        sum[band] += d, squares[band] += d * d, ++count[band];
+      }
+    double all = 0, offsets_removed = 0, n = 0;
+    for(std::size_t band = 0; band < 3; ++band)
+      if(count[band] > 0)
+      {
+        all += squares[band], n += count[band];
+        offsets_removed += squares[band] - sum[band] * sum[band] / count[band];
+      }
+    return {std::sqrt(all / n), std::sqrt(offsets_removed / n)};
   }
 
   double rms(const Soup& soup, const std::vector<Point>& P) const
@@ -185,6 +230,7 @@ struct Row
 {
   double raw, clamp, default_objective, accurate;
   double raw_faces, clamp_faces, default_faces; // the same on the faces
+  double raw_one_surface, default_one_surface, default_offsets_removed; // one_surface_rms()
 };
 
 Row measure(const Phantom& phantom, const std::array<double, 3>& spacing, double margin)
@@ -209,8 +255,10 @@ Row measure(const Phantom& phantom, const std::array<double, 3>& spacing, double
   std::size_t accurate_iterations = 0;
   const std::vector<Point> A = fair_jointly(soup, 1, seconds, accurate_iterations,
                                             CFP::fairing_objective(PMP::Constrained_fairing_objective::ACCURATE));
+  const std::array<double, 2> one_surface = phantom.one_surface_rms(soup, P);
   const Row row{phantom.rms(soup, soup.points), best, phantom.rms(soup, P), phantom.rms(soup, A),
-                phantom.face_rms(soup, soup.points), best_faces, phantom.face_rms(soup, P)};
+                phantom.face_rms(soup, soup.points), best_faces, phantom.face_rms(soup, P),
+                phantom.one_surface_rms(soup, soup.points)[0], one_surface[0], one_surface[1]};
   std::cout << std::left << std::setw(28) << phantom.name << std::right << std::setw(4) << spacing[0] << "x"
             << spacing[1] << "x" << std::setw(3) << spacing[2] << std::setw(8) << soup.points.size() << std::setw(9)
             << row.raw << std::setw(9) << row.clamp << std::setw(5) << best_count << std::setw(9)
@@ -219,7 +267,9 @@ Row measure(const Phantom& phantom, const std::array<double, 3>& spacing, double
             << row.clamp / row.default_objective << std::setw(8) << row.raw / row.accurate << std::setw(8)
             << row.clamp / row.accurate << std::setw(8) << smallest_angle(soup, P) << std::setw(9)
             << phantom.bias(soup, soup.points) << std::setw(9) << phantom.bias(soup, P) << std::setw(8)
-            << row.raw_faces / row.default_faces << std::setw(8) << row.clamp_faces / row.default_faces << std::endl;
+            << row.raw_faces / row.default_faces << std::setw(8) << row.clamp_faces / row.default_faces << std::setw(8)
+            << row.raw_one_surface / row.default_one_surface << std::setw(8)
+            << row.raw_one_surface / row.default_offsets_removed << std::endl;
   return row;
 }
 
@@ -231,18 +281,20 @@ int main(int argc, char* argv[])
   std::cout << benchmark::machine_description() << ", boxes' margin " << margin << "\n"
             << std::setprecision(3) << "RMS distance to the true interfaces (mm); ratios: raw or clamp over the "
             << "fairing\nmap                         voxels (mm) points      raw    clamp   at  default  its "
-            << "accurate  its raw/def clamp/def raw/acc clamp/acc angle  raw bias def bias faces: raw/def clamp/def\n";
-  std::array<double, 6> log_sum{0, 0, 0, 0, 0, 0};
-  std::array<double, 6> worst{1e300, 1e300, 1e300, 1e300, 1e300, 1e300};
+            << "accurate  its raw/def clamp/def raw/acc clamp/acc angle  raw bias def bias faces: raw/def clamp/def one surface: raw/def less offsets\n";
+  std::array<double, 8> log_sum{0, 0, 0, 0, 0, 0, 0, 0};
+  std::array<double, 8> worst{1e300, 1e300, 1e300, 1e300, 1e300, 1e300, 1e300, 1e300};
   std::size_t count = 0;
   for(const Phantom& phantom : phantoms())
     for(const std::array<double, 3>& spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{0.8, 0.8, 2.4}})
     {
       const Row r = measure(phantom, spacing, margin);
-      const std::array<double, 6> ratio{r.raw / r.default_objective, r.clamp / r.default_objective, r.raw / r.accurate,
-                                        r.clamp / r.accurate, r.raw_faces / r.default_faces,
-                                        r.clamp_faces / r.default_faces};
-      for(std::size_t k = 0; k < 6; ++k)
+      const std::array<double, 8> ratio{r.raw / r.default_objective,        r.clamp / r.default_objective,
+                                        r.raw / r.accurate,                 r.clamp / r.accurate,
+                                        r.raw_faces / r.default_faces,      r.clamp_faces / r.default_faces,
+                                        r.raw_one_surface / r.default_one_surface,
+                                        r.raw_one_surface / r.default_offsets_removed};
+      for(std::size_t k = 0; k < 8; ++k)
         log_sum[k] += std::log(ratio[k]), worst[k] = (std::min)(worst[k], ratio[k]);
       ++count;
     }
@@ -251,6 +303,9 @@ int main(int argc, char* argv[])
             << std::exp(log_sum[2] / double(count)) << "x raw (" << worst[2] << "), "
             << std::exp(log_sum[3] / double(count)) << "x clamp (" << worst[3] << ")\n"
             << "on the faces: default " << std::exp(log_sum[4] / double(count)) << "x raw (" << worst[4] << "), "
-            << std::exp(log_sum[5] / double(count)) << "x clamp (" << worst[5] << ")\n";
+            << std::exp(log_sum[5] / double(count)) << "x clamp (" << worst[5] << ")\n"
+            << "on the points of one surface: default " << std::exp(log_sum[6] / double(count)) << "x raw (" << worst[6]
+            << "), with each band's mean offset removed " << std::exp(log_sum[7] / double(count)) << "x raw ("
+            << worst[7] << ")\n";
   return 0;
 }
