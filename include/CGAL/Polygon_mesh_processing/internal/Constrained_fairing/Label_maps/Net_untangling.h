@@ -24,9 +24,11 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Mesh_operators.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
 
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Iterator_range.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
@@ -99,10 +101,12 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
   if(std::find(crossing.begin(), crossing.end(), true) == crossing.end())
     return;
   const double needle_sine = std::sin(untangling_needle_angle * CGAL_PI / 180);
-  std::vector<std::vector<std::size_t> > star(n);
-  for(std::size_t f = 0; f < m; ++f)
-    for(Index v : triangles[f])
-      star[v].push_back(f);
+  const Rows_by_vertex<std::size_t> triangles_at(n, [&](const auto& add) {
+    for(std::size_t f = 0; f < m; ++f)
+      for(Index v : triangles[f])
+        add(v, f);
+  });
+  const auto star = [&triangles_at](Index v) { return make_range(triangles_at.begin(v), triangles_at.end(v)); };
   const auto box_of = [&](std::size_t f) {
     Bbox_3 b;
     for(Index v : triangles[f])
@@ -130,7 +134,7 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
     for(Index v : points)
     {
       Bbox_3 region;
-      for(std::size_t f : star[v])
+      for(std::size_t f : star(v))
         region += reach[f];
       regions.push_back(region);
     }
@@ -150,13 +154,13 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
       const auto score = [&](int limit) {
         int count = 0;
         double sine = needle_sine;
-        for(std::size_t f : star[v])
+        for(std::size_t f : star(v))
         {
           const Bbox_3 b = box_of(f);
           for(const auto& g : still)
             if(do_overlap(b, g.second) && Triangle_crossings::cross(X, triangles[f], triangles[g.first]))
               ++count;
-          for(std::size_t g : star[v])
+          for(std::size_t g : star(v))
             if(g != f && do_overlap(b, box_of(g)) && Triangle_crossings::cross(X, triangles[f], triangles[g]))
               ++count;
           if(count > limit)
@@ -189,7 +193,7 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
       return;
     std::vector<bool> changed = crossing;
     for(Index v : points)
-      for(std::size_t f : star[v])
+      for(std::size_t f : star(v))
         changed[f] = true;
     crossing = crossings.find(X, changed);
   }
