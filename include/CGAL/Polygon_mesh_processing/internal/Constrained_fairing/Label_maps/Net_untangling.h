@@ -144,8 +144,8 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
     {
       const Index v = points[k];
       const Eigen::Vector3d start = point(X, v);
-      // The triangles near without v, whose boxes stay as v moves.
-      std::vector<std::pair<std::size_t, Bbox_3> > still;
+      // The triangles near without v, whose boxes stay as v moves; v's own, boxed at each position.
+      std::vector<std::pair<std::size_t, Bbox_3> > still, moving;
       for(std::size_t g : near[k])
         if(triangles[g][0] != v && triangles[g][1] != v && triangles[g][2] != v)
           still.emplace_back(g, box_of(g));
@@ -154,14 +154,18 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
       const auto score = [&](int limit) {
         int count = 0;
         double sine = needle_sine;
+        moving.clear();
         for(std::size_t f : star(v))
+          moving.emplace_back(f, box_of(f));
+        for(std::size_t i = 0; i < moving.size(); ++i)
         {
-          const Bbox_3 b = box_of(f);
+          const std::size_t f = moving[i].first;
+          const Bbox_3& b = moving[i].second;
           for(const auto& g : still)
             if(do_overlap(b, g.second) && Triangle_crossings::cross(X, triangles[f], triangles[g.first]))
               ++count;
-          for(std::size_t g : star(v))
-            if(g != f && do_overlap(b, box_of(g)) && Triangle_crossings::cross(X, triangles[f], triangles[g]))
+          for(std::size_t j = i + 1; j < moving.size(); ++j) // each pair of v's own triangles once
+            if(do_overlap(b, moving[j].second) && Triangle_crossings::cross(X, triangles[f], triangles[moving[j].first]))
               ++count;
           if(count > limit)
             break;
