@@ -98,6 +98,11 @@ inline Epsilon_text parse_epsilon(const std::string& written)
     if(number.empty())
       number = "1";
   }
+  if(number.size() > 1 && number[0] == '-' && internal::is_decimal(number.substr(1)))
+  {
+    eps.error = "must be positive (got '" + written + "')";
+    return eps;
+  }
   if(!internal::is_decimal(number))
   {
     eps.error = "must be a number, a number followed by h, or auto (got '" + written + "')";

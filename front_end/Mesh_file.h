@@ -18,7 +18,9 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
+#include "front_end/Ply_properties.h"
 #include "front_end/Polygon_soup_check.h"
+#include "front_end/Soup_repair.h"
 
 #include <algorithm>
 #include <cctype>
@@ -26,6 +28,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -64,6 +68,15 @@ inline std::string unwritable_file_reason(const std::string& path)
   return " (the file cannot be created or written)";
 }
 
+// Whether `path` ends with `extension` (".ply"), whatever the case.
+inline bool has_extension(const std::string& path, const std::string& extension)
+{
+  std::string found = std::filesystem::path(path).extension().string();
+  std::transform(found.begin(), found.end(), found.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return found == extension;
+}
+
 // Reads `path` into `points` and `polygons`; returns an empty string or the reason.
 template <typename Point>
 std::string read_polygon_soup_file(const std::string& path, std::vector<Point>& points,
@@ -74,14 +87,83 @@ std::string read_polygon_soup_file(const std::string& path, std::vector<Point>& 
   return std::string();
 }
 
+namespace internal {
+
+// The visitor of triangulate_faces() that gives each new triangle the polygon of the face it
+// splits; copied by the call, so it holds the table by pointer.
+template <typename TriangleMesh>
+struct Face_origin_visitor
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::vector<std::size_t>* origin;
+  std::size_t polygon = 0;
+
+  void before_subface_creations(face_descriptor f) { polygon = (*origin)[std::size_t(f)]; }
+  void after_subface_created(face_descriptor f)
+  {
+    if(std::size_t(f) >= origin->size())
+      origin->resize(std::size_t(f) + 1);
+    (*origin)[std::size_t(f)] = polygon;
+  }
+  void after_subface_creations() {}
+};
+
+// The face element of a PLY file: its polygons and the properties carried; false if it has no
+// list of vertex indices in a layout that CGAL's soup reader takes (the reason in `reason`).
+inline bool read_PLY_face_element(std::istream& stream, CGAL::IO::internal::PLY_element& element,
+                                  std::vector<std::vector<std::size_t> >& polygons, Ply_properties& properties,
+                                  std::string& reason)
+{
+  namespace PLY = CGAL::IO::internal;
+  const char* tag = element.has_property<std::vector<std::int32_t> >("vertex_indices") ||
+                        element.has_property<std::vector<std::uint32_t> >("vertex_indices")
+                      ? "vertex_indices"
+                      : "vertex_index";
+  const bool is_signed = element.has_property<std::vector<std::int32_t> >(tag);
+  if(!is_signed && !element.has_property<std::vector<std::uint32_t> >(tag))
+  {
+    reason = " (its faces have no list of vertex indices)";
+    return false;
+  }
+  Ply_carried_properties carried(element, {tag}, properties.dropped);
+  for(std::size_t j = 0; j < element.number_of_items(); ++j)
+  {
+    for(std::size_t k = 0; k < element.number_of_properties(); ++k)
+      element.property(k)->get(stream);
+    if(stream.fail())
+    {
+      reason = " (it ends before its face " + std::to_string(j) + ")";
+      return false;
+    }
+    std::vector<std::int64_t> indices;
+    if(is_signed)
+    {
+      std::vector<std::int32_t> read;
+      element.assign(read, tag);
+      indices.assign(read.begin(), read.end());
+    }
+    else
+    {
+      std::vector<std::uint32_t> read;
+      element.assign(read, tag);
+      indices.assign(read.begin(), read.end());
+    }
+    // A negative index becomes one out of range, which the soup's check names.
+    polygons.emplace_back(indices.begin(), indices.end());
+    carried.read_item(element);
+  }
+  properties.face = std::move(carried.properties);
+  return true;
+}
+
+} // namespace internal
+
 // Reads the PLY file `path` into `points` and `polygons` as read_polygon_soup_file() does, and
-// the float or double vertex property `name` into `values`, one per point; returns an empty
-// string or the reason. CGAL's readers of a soup drop the other properties of the vertices, and
-// its reader of a mesh with them needs a valid mesh: this reads both from one pass, with CGAL's
-// PLY parser.
+// every scalar property of its vertices and faces into `properties` (Ply_properties.h), in the
+// same pass with CGAL's PLY parser; returns an empty string or the reason.
 template <typename Point>
-std::string read_PLY_soup_file(const std::string& path, const std::string& name, std::vector<Point>& points,
-                               std::vector<std::vector<std::size_t> >& polygons, std::vector<double>& values)
+std::string read_PLY_mesh_file(const std::string& path, std::vector<Point>& points,
+                               std::vector<std::vector<std::size_t> >& polygons, Ply_properties& properties)
 {
   namespace PLY = CGAL::IO::internal;
   const std::string cannot = "cannot read " + path + " as a PLY mesh";
@@ -89,77 +171,140 @@ std::string read_PLY_soup_file(const std::string& path, const std::string& name,
   PLY::PLY_reader reader(false);
   if(!stream || !reader.init(stream))
     return cannot + unreadable_file_reason(path);
-  bool has_vertices = false;
+  properties.comments = reader.comments();
   for(std::size_t i = 0; i < reader.number_of_elements(); ++i)
   {
     PLY::PLY_element& element = reader.element(i);
+    std::string reason;
     if(element.name() == "face" || element.name() == "faces")
     {
-      // The four layouts that CGAL's soup reader accepts.
-      const char* tag = element.has_property<std::vector<std::int32_t> >("vertex_indices") ||
-                            element.has_property<std::vector<std::uint32_t> >("vertex_indices")
-                          ? "vertex_indices"
-                          : "vertex_index";
-      const bool is_signed = element.has_property<std::vector<std::int32_t> >(tag);
-      if(!is_signed && !element.has_property<std::vector<std::uint32_t> >(tag))
-        return cannot + " (its faces have no list of vertex indices)";
-      const bool read =
-        is_signed ? PLY::read_PLY_faces<std::int32_t>(stream, element, polygons, CGAL::Emptyset_iterator(), tag)
-                  : PLY::read_PLY_faces<std::uint32_t>(stream, element, polygons, CGAL::Emptyset_iterator(), tag);
-      if(!read)
-        return cannot + " (its faces cannot be read)";
+      if(!internal::read_PLY_face_element(stream, element, polygons, properties, reason))
+        return cannot + reason;
       continue;
     }
     const bool vertex = element.name() == "vertex" || element.name() == "vertices";
-    if(vertex)
-    {
-      has_vertices = true;
-      // has_property<double> accepts float too, as assign(double&) reads both.
-      for(const char* coordinate : {"x", "y", "z"})
-        if(!element.has_property<double>(coordinate))
-          return cannot + " (its vertices have no float or double " + coordinate + ")";
-      if(!element.has_property<double>(name.c_str()))
-        return path + " has no float or double vertex property " + name;
-    }
+    // has_property<double> accepts float too, as assign(double&) reads both.
+    for(const char* coordinate : {"x", "y", "z"})
+      if(vertex && !element.has_property<double>(coordinate))
+        return cannot + " (its vertices have no float or double " + coordinate + ")";
+    std::vector<std::string> others;
+    Ply_carried_properties carried(element, {"x", "y", "z"}, vertex ? properties.dropped : others);
+    if(!vertex)
+      properties.dropped.push_back("element " + element.name());
     for(std::size_t j = 0; j < element.number_of_items(); ++j)
     {
       for(std::size_t k = 0; k < element.number_of_properties(); ++k)
-      {
         element.property(k)->get(stream);
-        if(stream.fail())
-          return cannot + " (it ends before its " + element.name() + " " + std::to_string(j) + ")";
-      }
-      if(vertex)
-      {
-        double x = 0, y = 0, z = 0, value = 0;
-        element.assign(x, "x");
-        element.assign(y, "y");
-        element.assign(z, "z");
-        element.assign(value, name.c_str());
-        points.emplace_back(x, y, z);
-        values.push_back(value);
-      }
+      if(stream.fail())
+        return cannot + " (it ends before its " + element.name() + " " + std::to_string(j) + ")";
+      if(!vertex)
+        continue;
+      double x = 0, y = 0, z = 0;
+      element.assign(x, "x");
+      element.assign(y, "y");
+      element.assign(z, "z");
+      points.emplace_back(x, y, z);
+      carried.read_item(element);
     }
+    if(vertex)
+      properties.vertex = std::move(carried.properties);
   }
-  if(!has_vertices)
+  return std::string();
+}
+
+// The float or double vertex property `name` of the PLY file `path`, read into `properties`,
+// as one value per vertex; returns an empty string or the reason.
+inline std::string vertex_property_values(const std::string& path, const Ply_properties& properties,
+                                          const std::string& name, std::vector<double>& values)
+{
+  const Ply_property* property = properties.vertex_property(name);
+  if(property == nullptr || (property->type != "float" && property->type != "double"))
     return path + " has no float or double vertex property " + name;
+  values = property->values;
   return std::string();
 }
 
 // Checks the soup read from `path`, makes `mesh` of it, and triangulates its faces of more
-// than three vertices, `triangulated` of them; returns an empty string or the reason.
+// than three vertices, `triangulated` of them; returns an empty string or the reason. With
+// `face_polygon`, also the polygon each face of `mesh` comes from (a polygon's triangles all
+// come from it), which carries the file's face properties to the triangles. `repair_hint` ends
+// the message of a defect that the soup repair mends.
 template <typename Point, typename TriangleMesh>
 std::string make_triangle_mesh(const std::string& path, const std::vector<Point>& points,
                                const std::vector<std::vector<std::size_t> >& polygons, TriangleMesh& mesh,
-                               std::size_t& triangulated)
+                               std::size_t& triangulated, std::vector<std::size_t>* face_polygon = nullptr,
+                               const std::string& repair_hint = std::string())
 {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Defect = CGAL::Polygon_mesh_processing::Constrained_fairing_defect;
   if(const Input_error soup = polygon_soup_error(points.size(), polygons))
-    return path + ": " + soup.message;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  {
+    const bool repairable = soup.defect == Defect::NON_MANIFOLD_EDGE || soup.defect == Defect::NON_MANIFOLD_VERTEX ||
+                            soup.defect == Defect::INCONSISTENT_ORIENTATION ||
+                            (soup.defect == Defect::INVALID_FACE && soup.message.find("but there are") == std::string::npos);
+    return path + ": " + soup.message + (repairable ? repair_hint : std::string());
+  }
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   triangulated = static_cast<std::size_t>(std::count_if(
     polygons.begin(), polygons.end(), [](const std::vector<std::size_t>& p) { return p.size() > 3; }));
-  if(triangulated > 0 && !CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
+  // The soup's polygons become the mesh's faces in their order.
+  std::vector<std::size_t> origin(polygons.size());
+  for(std::size_t f = 0; f < origin.size(); ++f)
+    origin[f] = f;
+  internal::Face_origin_visitor<TriangleMesh> visitor{&origin};
+  if(triangulated > 0 && !PMP::triangulate_faces(mesh, CGAL::parameters::visitor(visitor)))
     return "cannot triangulate the faces of " + path + " with more than three vertices";
+  if(face_polygon != nullptr)
+    *face_polygon = std::move(origin);
+  return std::string();
+}
+
+// What a mesh file gives besides the mesh: where each vertex and face of the mesh comes from in
+// the file (a triangle from its polygon, a repaired point from the input point at its position),
+// the PLY properties read, and what was triangulated and repaired.
+struct Mesh_file_contents
+{
+  std::vector<std::size_t> vertex_origin, face_origin;
+  Ply_properties properties;
+  std::size_t triangulated = 0;
+  std::optional<Soup_repair> repair;
+};
+
+// Reads `path` into `mesh`: with `properties`, a PLY file's vertex and face properties too; with
+// `repair`, its soup repaired first (Soup_repair.h); without, a defect the repair mends is named
+// with `repair_hint` (how the front end asks for it). Returns an empty string or the reason.
+template <typename TriangleMesh>
+std::string read_triangle_mesh_file(const std::string& path, bool properties, bool repair, TriangleMesh& mesh,
+                                    Mesh_file_contents& contents, const std::string& repair_hint)
+{
+  using Point = typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, boost::vertex_point_t>::type>::value_type;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  const bool ply = properties && has_extension(path, ".ply");
+  std::string error = ply ? read_PLY_mesh_file(path, points, polygons, contents.properties)
+                          : read_polygon_soup_file(path, points, polygons);
+  if(!error.empty())
+    return error;
+  std::vector<std::size_t> polygon_origin(polygons.size());
+  std::iota(polygon_origin.begin(), polygon_origin.end(), std::size_t(0));
+  contents.vertex_origin.resize(points.size());
+  std::iota(contents.vertex_origin.begin(), contents.vertex_origin.end(), std::size_t(0));
+  if(repair)
+  {
+    contents.repair.emplace();
+    if(const Input_error defect = repair_polygon_soup(points, polygons, *contents.repair))
+      return path + ": " + defect.message;
+    contents.vertex_origin = contents.repair->point_origin;
+    polygon_origin = contents.repair->polygon_origin;
+  }
+  std::vector<std::size_t> face_polygon;
+  error = make_triangle_mesh(path, points, polygons, mesh, contents.triangulated, &face_polygon,
+                             repair ? std::string() : repair_hint);
+  if(!error.empty())
+    return error;
+  for(std::size_t polygon : face_polygon)
+    contents.face_origin.push_back(polygon_origin[polygon]);
   return std::string();
 }
 

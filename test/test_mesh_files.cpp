@@ -43,9 +43,12 @@ Outcome read(const std::string& path, const std::string& property)
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
   std::vector<double> values;
+  FE::Ply_properties properties;
   Outcome outcome;
   outcome.error = property.empty() ? FE::read_polygon_soup_file(path, points, polygons)
-                                   : FE::read_PLY_soup_file(path, property, points, polygons, values);
+                                   : FE::read_PLY_mesh_file(path, points, polygons, properties);
+  if(outcome.error.empty() && !property.empty())
+    outcome.error = FE::vertex_property_values(path, properties, property, values);
   if(outcome.error.empty())
   {
     CGAL::Surface_mesh<Point> mesh;

@@ -23,7 +23,7 @@ Example
 
 from ._errors import Defect, InputError
 from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length, set_max_threads
-from ._io import read_mesh, write_mesh
+from ._io import MeshProperties, read_mesh, write_mesh
 from ._label_map_files import read_label_map
 from ._labels import LABEL_BOX_MARGIN, LabelSurfaces, fair_interfaces, label_surfaces
 from ._report import Report, Status
@@ -31,7 +31,7 @@ from ._report import Report, Status
 __version__ = "0.1.0"
 
 __all__ = [
-    "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "Report", "Status", "estimate_noise_level", "fair",
+    "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "MeshProperties", "Report", "Status", "estimate_noise_level", "fair",
     "fair_files", "fair_interfaces", "label_surfaces", "max_threads", "mean_edge_length",
     "read_label_map", "read_mesh", "set_max_threads", "write_mesh",
 ]

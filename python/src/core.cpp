@@ -498,16 +498,9 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
   return report_of(result, out, deviation, at_bound);
 }
 
-// label_surface(): the closed surface of one label, as (vertices, faces).
-py::tuple label_surface(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels,
-                        Label label)
+// The arrays of a mesh: its points and its triangles.
+py::tuple mesh_arrays(const Mesh& mesh)
 {
-  Mesh mesh;
-  {
-    py::gil_scoped_release release;
-    const Label_soup soup(vertices, faces, face_labels);
-    PMP::label_surface(soup.points, soup.triangles, soup.labels, label, mesh);
-  }
   Float_array V({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
   Index_array F({py::ssize_t(mesh.number_of_faces()), py::ssize_t(3)});
   double* v = V.mutable_data();
@@ -523,6 +516,32 @@ py::tuple label_surface(const Float_array& vertices, const Index_array& faces, c
     for(vertex_descriptor u : vertices_around_face(mesh.halfedge(g), mesh))
       *f++ = std::int64_t(u.idx());
   return py::make_tuple(V, F);
+}
+
+// label_surface(): the closed surface of one label, as (vertices, faces).
+py::tuple label_surface(const Float_array& vertices, const Index_array& faces, const Label_array& face_labels,
+                        Label label)
+{
+  Mesh mesh;
+  {
+    py::gil_scoped_release release;
+    const Label_soup soup(vertices, faces, face_labels);
+    PMP::label_surface(soup.points, soup.triangles, soup.labels, label, mesh);
+  }
+  return mesh_arrays(mesh);
+}
+
+// Properties as the Python layer takes them: (name, PLY type, values as float64).
+py::list property_list(const std::vector<FE::Ply_property>& properties)
+{
+  py::list list;
+  for(const FE::Ply_property& p : properties)
+  {
+    Float_array values(py::ssize_t(p.values.size()));
+    std::copy(p.values.begin(), p.values.end(), values.mutable_data());
+    list.append(py::make_tuple(p.name, p.type, values));
+  }
+  return list;
 }
 
 // Reads a file as the command-line tool does (Mesh_file.h); a file of triangles gives its
@@ -570,6 +589,40 @@ py::tuple read_mesh(const std::string& path)
   return py::make_tuple(V, F);
 }
 
+// Reads a file as the tool does with a PLY's properties and, with `repair`, --repair: as
+// (vertices, faces, vertex properties, face properties, comments, dropped, repair summary).
+py::tuple read_mesh_with_properties(const std::string& path, bool repair)
+{
+  Mesh mesh;
+  FE::Mesh_file_contents contents;
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    error = FE::read_triangle_mesh_file(path, true, repair, mesh, contents, " (read_mesh(path, repair=True) makes a mesh of such a soup)");
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+  const py::tuple arrays = mesh_arrays(mesh);
+  const FE::Ply_properties& p = contents.properties;
+  return py::make_tuple(arrays[0], arrays[1], property_list(FE::ply_properties_of(p.vertex, contents.vertex_origin)),
+                        property_list(FE::ply_properties_of(p.face, contents.face_origin)), p.comments, p.dropped,
+                        contents.repair ? contents.repair->summary() : std::string());
+}
+
+// The properties the Python layer gives, (name, PLY type, float64 values), as the front end's.
+std::vector<FE::Ply_property> properties_of(const py::list& list)
+{
+  std::vector<FE::Ply_property> properties;
+  for(const py::handle item : list)
+  {
+    const py::tuple t = item.cast<py::tuple>();
+    const Float_array values = t[2].cast<Float_array>();
+    properties.push_back({t[0].cast<std::string>(), t[1].cast<std::string>(),
+                          std::vector<double>(values.data(), values.data() + values.size())});
+  }
+  return properties;
+}
+
 void write_mesh(const std::string& path, const Float_array& vertices, const Index_array& faces)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
@@ -586,6 +639,30 @@ void write_mesh(const std::string& path, const Float_array& vertices, const Inde
         triangles[i][c] = static_cast<std::size_t>(faces.data()[3 * i + c]);
     if(!CGAL::IO::write_polygon_soup(path, points, triangles, CGAL::parameters::stream_precision(17).verbose(false)))
       error = "cannot write " + path + FE::unwritable_file_reason(path);
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+}
+
+// Writes a PLY file of a mesh with properties, as the tool writes its PLY output.
+void write_mesh_with_properties(const std::string& path, const Float_array& vertices, const Index_array& faces,
+                                const py::list& vertex_properties, const py::list& face_properties,
+                                const std::string& comments)
+{
+  const std::vector<FE::Ply_property> vertex = properties_of(vertex_properties), face = properties_of(face_properties);
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    Mesh mesh;
+    if(const CF::Input_error defect = build_mesh(vertices, faces, mesh))
+      error = path + ": properties are written with a mesh, and this is not one: " + defect.message;
+    else
+    {
+      FE::add_ply_properties<vertex_descriptor>(vertex, "v:", mesh);
+      FE::add_ply_properties<face_descriptor>(face, "f:", mesh);
+      if(!FE::write_PLY_mesh_file(path, mesh, comments))
+        error = "cannot write " + path + FE::unwritable_file_reason(path);
+    }
   }
   if(!error.empty())
     throw py::value_error(error);
@@ -732,6 +809,9 @@ PYBIND11_MODULE(_core, m)
         py::arg("label"));
   m.def("read_mesh", &read_mesh, py::arg("path"));
   m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
+  m.def("read_mesh_with_properties", &read_mesh_with_properties, py::arg("path"), py::arg("repair"));
+  m.def("write_mesh_with_properties", &write_mesh_with_properties, py::arg("path"), py::arg("vertices"),
+        py::arg("faces"), py::arg("vertex_properties"), py::arg("face_properties"), py::arg("comments"));
   m.def("max_threads", &max_threads);
   m.def("set_max_threads", &set_max_threads, py::arg("threads"));
 #ifdef CGAL_LINKED_WITH_TBB
