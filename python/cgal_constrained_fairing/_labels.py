@@ -1,7 +1,9 @@
 """Label maps to surfaces: one closed surface per label, the interfaces shared exactly."""
 
+import os
 from dataclasses import dataclass
-from typing import Optional, Sequence, Tuple
+from pathlib import Path
+from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -18,7 +20,7 @@ from ._report import Report
 LABEL_BOX_MARGIN: float = _core.label_box_margin
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class LabelSurfaces:
     """The surfaces of a label map, as one multi-label triangle soup.
 
@@ -63,6 +65,49 @@ class LabelSurfaces:
         if label not in set(self.labels.tolist()):
             raise invalid(f"label {label!r} has no surface (labels: {self.labels.tolist()})")
         return _core.label_surface(self.vertices, self.faces, self.face_labels, int(label))
+
+    def write(self, folder: "os.PathLike[str] | str", format: str = "ply", *,
+              force: bool = False) -> List[Path]:
+        """Write each label's closed surface to ``folder / label_<L>.<format>``.
+
+        Nothing else in `folder` is touched: a new folder appears with all the files at once;
+        an existing one gets only these files, each written beside its name and renamed into
+        place once all are complete, so that a failed write leaves the folder as it was.
+
+        Parameters
+        ----------
+        folder : str or os.PathLike
+            The folder; its parent must exist.
+        format : {"ply", "off", "obj", "stl"}
+            The surfaces' format.
+        force : bool
+            Replace the ``label_<L>`` files that exist; without it they are refused.
+
+        Returns
+        -------
+        list of pathlib.Path
+            The files written, in the order of `labels`.
+
+        Raises
+        ------
+        ValueError
+            Before anything is written: `folder` is an existing file, a surface's file exists
+            (without `force`) or is a folder, an unknown `format`; or a file cannot be written.
+        """
+        format = str(format).lower().lstrip(".")
+        if format not in ("ply", "off", "obj", "stl"):
+            raise ValueError(f"format must be ply, off, obj or stl (got {format!r})")
+        folder = Path(os.fspath(folder))
+        names = [f"label_{label}.{format}" for label in self.labels.tolist()]
+        surfaces = [self.surface(label) for label in self.labels.tolist()]
+        _core.write_files_into_folder("", str(folder), names, surfaces, bool(force))
+        return [folder / name for name in names]
+
+    def __repr__(self):
+        fairing = "not faired" if self.report is None else self.report.status.value.lower()
+        return (f"LabelSurfaces({len(self.labels)} label{'s' if len(self.labels) != 1 else ''} "
+                f"{self.labels.tolist()[:10]}{'...' if len(self.labels) > 10 else ''}, "
+                f"{len(self.vertices)} points, {len(self.faces)} triangles, {fairing})")
 
 
 def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),

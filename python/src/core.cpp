@@ -18,6 +18,7 @@
 #include "front_end/Epsilon_grammar.h"
 #include "front_end/Mean_edge_length.h"
 #include "front_end/Mesh_file.h"
+#include "front_end/Output_files.h"
 #include "front_end/Voxel_frame.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -668,6 +669,38 @@ void write_mesh_with_properties(const std::string& path, const Float_array& vert
     throw py::value_error(error);
 }
 
+// Writes meshes (V, F) as the files `names` of `folder`, as the tool writes a label map's
+// surfaces (front_end/Output_files.h); refuses, before writing anything, what that refuses
+// (`source` being the input, or empty).
+void write_files_into_folder(const std::string& source, const std::string& folder,
+                             const std::vector<std::string>& names, const std::vector<py::tuple>& meshes, bool force)
+{
+  std::vector<std::pair<Float_array, Index_array> > arrays;
+  for(const py::tuple& mesh : meshes)
+    arrays.emplace_back(mesh[0].cast<Float_array>(), mesh[1].cast<Index_array>());
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    error = FE::output_folder_error(source, folder, names, force);
+    if(error.empty())
+      error = FE::write_files_into_folder(folder, names, [&](const std::string& path, std::size_t k) {
+        std::vector<Point> points;
+        const Float_array& V = arrays[k].first;
+        for(py::ssize_t i = 0; i < V.shape(0); ++i)
+          points.emplace_back(V.data()[3 * i], V.data()[3 * i + 1], V.data()[3 * i + 2]);
+        std::vector<Triangle> triangles(std::size_t(arrays[k].second.shape(0)));
+        for(std::size_t f = 0; f < triangles.size(); ++f)
+          for(std::size_t c = 0; c < 3; ++c)
+            triangles[f][c] = std::size_t(arrays[k].second.data()[3 * f + c]);
+        if(CGAL::IO::write_polygon_soup(path, points, triangles, CGAL::parameters::stream_precision(17).verbose(false)))
+          return std::string();
+        return "cannot write " + path + FE::unwritable_file_reason(path);
+      });
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+}
+
 std::size_t max_threads()
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -809,6 +842,8 @@ PYBIND11_MODULE(_core, m)
         py::arg("label"));
   m.def("read_mesh", &read_mesh, py::arg("path"));
   m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
+  m.def("write_files_into_folder", &write_files_into_folder, py::arg("source"), py::arg("folder"), py::arg("names"),
+        py::arg("meshes"), py::arg("force"));
   m.def("read_mesh_with_properties", &read_mesh_with_properties, py::arg("path"), py::arg("repair"));
   m.def("write_mesh_with_properties", &write_mesh_with_properties, py::arg("path"), py::arg("vertices"),
         py::arg("faces"), py::arg("vertex_properties"), py::arg("face_properties"), py::arg("comments"));

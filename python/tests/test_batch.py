@@ -206,12 +206,14 @@ def test_rerun_skips_done_files_and_retries_failed_ones(client, tmp_path):
     _, table = read_report(out_dir)
     assert [row["status"] for row in table] == [row["status"] for row in second]
 
-    # Without the report, a done file shows as skipped.
+    # Without the report, an output is not known to be the batch's: it is not replaced.
     os.remove(out_dir / "report.csv")
     third = fair_files(paths, out_dir, client, progress=False)
-    assert [row["status"] for row in third] == ["skipped"] * 2 + ["error", "skipped"]
-    assert [row["output"] for row in third] == [str(out_dir / p.name) for p in paths[:2]] + [
-        None, str(out_dir / paths[3].name)]
+    assert [row["status"] for row in third] == ["error"] * 4
+    for row, path in zip(third[:2] + third[3:], paths[:2] + paths[3:]):
+        assert row["error"].startswith("FileExistsError: ") and "force" in row["error"]
+    assert third[2]["error"] == first[2]["error"]
+    assert [os.stat(o).st_mtime for o in outputs] == [old, old]
 
     forced = fair_files(paths, out_dir, client, force=True, progress=False)
     assert all(os.stat(o).st_mtime != old for o in outputs)
@@ -338,3 +340,98 @@ def test_threads_limit_the_library_in_each_worker(client, tmp_path):
     assert all(limit == os.cpu_count() for limit in limits.values()) or not cf._core.with_tbb
     with pytest.raises(ValueError, match="threads"):
         fair_files(paths, tmp_path / "out2", client, threads=0)
+
+
+def snapshot(folder):
+    """Every file under `folder` with its bytes."""
+    return {p.relative_to(folder): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def test_force_never_replaces_an_input(client, tmp_path):
+    """A label map's output folder that holds the map itself: the run adds its label files,
+    with or without --force, and the map and the user's files stay as they were."""
+    nibabel = pytest.importorskip("nibabel")
+    seg = tmp_path / "seg"
+    seg.mkdir()
+    labels = np.zeros((16, 16, 16), np.uint8)
+    labels[4:10, 4:10, 4:10] = 1
+    nibabel.save(nibabel.Nifti1Image(labels, np.eye(4)), str(seg / "seg.nii.gz"))
+    (seg / "notes.txt").write_text("mine\n")
+    before = snapshot(tmp_path)
+    scheduler = client.scheduler.address
+    done = run_cli(str(seg / "seg.nii.gz"), "-o", str(tmp_path), "--scheduler", scheduler)
+    assert done.returncode == 0, done.stderr
+    assert "1 faired" in done.stdout
+    after = snapshot(tmp_path)
+    assert all(after[path] == content for path, content in before.items())
+    assert set(after) - set(before) == {Path("seg/label_1.ply"), Path("report.csv")}
+    forced = run_cli(str(seg / "seg.nii.gz"), "-o", str(tmp_path), "--scheduler", scheduler,
+                     "--force")
+    assert forced.returncode == 0, forced.stderr
+    again = snapshot(tmp_path)
+    assert all(again[path] == content for path, content in before.items())
+
+
+def test_an_output_the_batch_did_not_write_is_not_replaced(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:1], bad=False)
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    (out_dir / GOOD[0]).write_text("a user's file\n")
+    [row] = fair_files(paths, out_dir, client, progress=False)
+    assert row["status"] == "error" and row["error"].startswith("FileExistsError: ")
+    assert (out_dir / GOOD[0]).read_text() == "a user's file\n"
+    [row] = fair_files(paths, out_dir, client, force=True, progress=False)
+    check_outputs([row], paths, out_dir, "0.25h")
+
+
+def test_rerun_with_other_options_fairs_again(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:2], bad=False)
+    out_dir = tmp_path / "out"
+    first = fair_files(paths, out_dir, client, eps="auto", progress=False)
+    check_outputs(first, paths, out_dir, "auto")
+    same = fair_files(paths, out_dir, client, eps="auto", progress=False)
+    assert same == first
+    other = fair_files(paths, out_dir, client, eps="0.5h", progress=False)
+    check_outputs(other, paths, out_dir, "0.5h")
+    assert [row["options"] for row in other] != [row["options"] for row in first]
+    # A rerun on a subset keeps the other files' rows.
+    subset = fair_files(paths[:1], out_dir, client, eps="0.3h", progress=False)
+    check_outputs(subset, paths[:1], out_dir, "0.3h")
+    _, table = read_report(out_dir)
+    assert sorted(row["path"] for row in table) == sorted(str(p) for p in paths)
+    kept = next(row for row in table if row["path"] == str(paths[1]))
+    assert float(kept["epsilon"]) == other[1]["epsilon"]
+
+
+def test_a_failed_rerun_leaves_the_earlier_output(client, tmp_path):
+    paths = copy_inputs(tmp_path / "in", good=GOOD[:1], bad=False)
+    out_dir = tmp_path / "out"
+    fair_files(paths, out_dir, client, progress=False)
+    before = (out_dir / GOOD[0]).read_bytes()
+    paths[0].write_text("no longer a mesh\n")
+    [row] = fair_files(paths, out_dir, client, eps="0.3h", progress=False)
+    assert row["status"] == "error"
+    assert (out_dir / GOOD[0]).read_bytes() == before
+    assert no_partial_files(out_dir)
+
+
+def test_ply_properties_survive_the_batch(client, tmp_path):
+    V, F = cf.read_mesh(DATA / "head.off")
+    properties = cf.MeshProperties(
+        vertex={"red": (np.arange(len(V)) % 256).astype(np.uint8),
+                "confidence": np.linspace(0, 1, len(V), dtype=np.float32)},
+        face={"segment": (np.arange(len(F)) % 3).astype(np.int32)}, comments="scanner 7\n")
+    (tmp_path / "in").mkdir()
+    path = tmp_path / "in" / "scan.ply"
+    cf.write_mesh(path, V, F, properties=properties)
+    [row] = fair_files([path], tmp_path / "out", client, progress=False)
+    W, G, carried = cf.read_mesh(tmp_path / "out" / "scan.ply", properties=True)
+    assert list(carried.vertex) == ["red", "confidence", "deviation", "at_bound"]
+    for name, values in properties.vertex.items():
+        assert carried.vertex[name].dtype == values.dtype
+        assert np.array_equal(carried.vertex[name], values)
+    assert np.array_equal(carried.face["segment"], properties.face["segment"])
+    assert np.array_equal(G, F)
+    assert np.array_equal(carried.vertex["deviation"], np.linalg.norm(W - V, axis=1))
+    assert (carried.vertex["deviation"] <= row["epsilon"]).all()
+    assert carried.comments == "scanner 7\n"

@@ -231,7 +231,7 @@ def test_batch_writes_one_surface_per_label_in_world_coordinates(tmp_path):
     # tried again.
     written = os.stat(out / "scan" / "label_3.off").st_mtime_ns
     again = fair_files([inputs / "scan.nii.gz", inputs / "grains.npy", inputs / "broken.nii"], out,
-                       workers=1)
+                       workers=1, label_format="off")
     assert again[:2] == rows[:2] and again[2]["status"] == "error"
     assert os.stat(out / "scan" / "label_3.off").st_mtime_ns == written
 
@@ -259,7 +259,7 @@ def test_batch_command_line_on_a_label_map(tmp_path):
     assert done.returncode == 0, done.stderr
     assert "1 faired, 0 skipped, 0 failed" in done.stdout
     assert sorted(os.listdir(tmp_path / "out" / "seg")) == ["label_3.ply", "label_7.ply"]
-    assert Path(tmp_path / "out" / "report.csv").read_text().splitlines()[0].endswith(",labels")
+    assert Path(tmp_path / "out" / "report.csv").read_text().splitlines()[0].endswith(",labels,options")
 
 
 ATLAS = Path("/usr/share/mricron/templates/HarvardOxford-cort-maxprob-thr0-1mm.nii.gz")

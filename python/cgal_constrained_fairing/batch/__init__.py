@@ -55,19 +55,24 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
                force: bool = False,
                progress: Optional[bool] = None,
                label_format: str = "ply",
+               repair: bool = False,
                **fair_options: Any) -> List[Row]:
     """Fair mesh files and label maps on a Dask cluster, one task per file; report what was done.
 
     Each mesh file is read with `read_mesh`, faired with `fair` and written to
     ``out_dir / <its file name>`` (same format) through a temporary file, so that an output
-    file is always complete. Each label map (``.nii``, ``.nii.gz``, ``.npy``) is read with
-    `read_label_map`, its surfaces made and faired together within their voxels with
-    `label_surfaces` (its affine applied: the surfaces are in world coordinates), and each
-    label's closed surface written to ``out_dir / <its name> / label_<L>.<label_format>``; the
-    folder appears complete or not at all. The report ``out_dir/report.csv`` is rewritten
-    after each file, so that an interrupted batch leaves the table of what it did. Files whose output exists
-    are skipped, whatever options made it: running the same batch again finishes it, and
-    `force` redoes everything.
+    file is always complete; a PLY file's vertex and face properties are carried to its output,
+    with each vertex's ``deviation`` and ``at_bound``. Each label map (``.nii``, ``.nii.gz``,
+    ``.npy``) is read with `read_label_map`, its surfaces made and faired together within
+    their voxels with `label_surfaces` (its affine applied: the surfaces are in world
+    coordinates), and each label's closed surface written to
+    ``out_dir / <its name> / label_<L>.<label_format>`` (`LabelSurfaces.write`: the folder
+    gets nothing else). The report ``out_dir/report.csv`` is rewritten after each file, so
+    that an interrupted batch leaves the table of what it did; it keeps the rows of files that
+    are not in this batch. Nothing the batch did not write is replaced: a file whose output
+    the report records as made with the same options is skipped (running the same batch again
+    finishes it), one made with other options is faired again, and an output that the report
+    does not record is an error row unless `force`, which replaces outputs (never an input).
 
     Parameters
     ----------
@@ -95,12 +100,16 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         on the local cluster, the cores divided among its workers; on a `client`'s cluster,
         no limit (a ``dask-worker`` process per machine, whose tasks share its cores).
     force : bool
-        Fair every file, even those whose output exists.
+        Fair every file, even those done with the same options, and replace outputs that the
+        report does not record (a label map's folder: only its ``label_<L>`` files).
     progress : bool, optional
         Show a progress bar (tqdm) on stderr. Default: when stderr is a terminal and tqdm
         is installed.
     label_format : {"ply", "off", "obj", "stl"}
         The format of the labels' surfaces.
+    repair : bool
+        Make a mesh of each mesh file that is a soup but not a mesh, as `read_mesh`'s
+        `repair` (the command-line tool's ``--repair``).
     **fair_options
         Passed to `fair` unchanged for every mesh file, e.g. ``objective="accurate"``
         (`progress` is the batch's own; `fair`'s progress is not available here); with label
@@ -113,10 +122,9 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         The report's rows, one per input in input order, keyed by `COLUMNS`; missing values
         are ``None``. ``path`` and ``output`` are absolute paths; ``status`` is the lower-case
         `Status` of the run (``"converged"``, ``"iteration_limit_reached"``,
-        ``"cancelled"``), ``"error"`` (``error`` says why: ``"DEFECT: message"`` for an
-        `InputError`, ``"TypeName: message"`` otherwise) or ``"skipped"``; a skipped file
-        whose row the previous report holds keeps that row (but a previous error is not kept:
-        the file's output exists, so it shows as ``"skipped"``). ``seconds`` is the wall time
+        ``"cancelled"``) or ``"error"`` (``error`` says why: ``"DEFECT: message"`` for an
+        `InputError`, ``"TypeName: message"`` otherwise); a skipped file keeps the row of the
+        previous report, whose ``options`` are this batch's. ``seconds`` is the wall time
         of the file's task (read, fair, write) and ``worker`` the address of its worker. For a
         label map, ``vertices`` and ``faces`` count its multi-label surface (each point and
         triangle once), ``labels`` the surfaces written, ``output`` is their folder and
@@ -140,7 +148,7 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     >>> [row["status"] for row in rows]                                 # doctest: +SKIP
     ['converged', 'converged']
     """
-    batch = Batch(paths, out_dir, eps, force, fair_options, label_format)
+    batch = Batch(paths, out_dir, eps, force, fair_options, label_format, repair)
     if client is not None and workers is not None:
         raise ValueError("workers applies to the local cluster only; not with a client")
     cores = available_cores()

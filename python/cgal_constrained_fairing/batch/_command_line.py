@@ -6,10 +6,7 @@ from typing import Optional, Sequence
 
 from ._epsilon import DEFAULT_EPS
 from ._progress import show_progress
-from ._schedule import Batch, available_cores, import_distributed
-
-# The statuses of a file that was faired.
-_DONE = ("converged", "iteration_limit_reached", "cancelled")
+from ._schedule import DONE, Batch, available_cores, import_distributed
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -33,8 +30,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                     "into one closed surface per label, faired together within their voxels. "
                     "Meshes go to OUT_DIR under the inputs' file names, a label map's surfaces "
                     "to OUT_DIR/<its name>/label_<L>.<format> in world coordinates, with a "
-                    "table of what was done in OUT_DIR/report.csv; files already done are "
-                    "skipped.")
+                    "table of what was done in OUT_DIR/report.csv; files already done with the "
+                    "same options are skipped, and nothing the batch did not write is replaced "
+                    "without --force.")
     parser.add_argument("inputs", nargs="+", metavar="IN", help="mesh files and label maps")
     parser.add_argument("-o", "--out-dir", required=True, metavar="OUT_DIR",
                         help="the output folder (created if missing)")
@@ -60,7 +58,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                              "(default: the cores shared among the local workers; no limit on "
                              "a scheduler's cluster)")
     parser.add_argument("--force", action="store_true",
-                        help="fair every file, even those whose output exists")
+                        help="fair every file, even those done with the same options, and "
+                             "replace outputs the report does not record (never an input)")
+    parser.add_argument("--repair", action="store_true",
+                        help="make a mesh of each mesh file that is a soup but not a mesh "
+                             "(CGAL's soup repair), as the tool's --repair")
     args = parser.parse_args(argv)
     if args.workers is not None and args.workers < 1:
         parser.error(f"--workers must be at least 1 (got {args.workers})")
@@ -72,7 +74,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         options["feature_angle"] = args.feature_angle
     try:
         batch = Batch(args.inputs, args.out_dir, args.eps, args.force, options,
-                      args.label_format)
+                      args.label_format, args.repair)
     except ValueError as error:
         parser.error(str(error))
 
@@ -98,7 +100,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     skipped = set(batch.skipped)
     failed = [row for row in rows if row["status"] == "error"]
     faired = sum(1 for index, row in enumerate(rows)
-                 if index not in skipped and row["status"] in _DONE)
+                 if index not in skipped and row["status"] in DONE)
     for row in failed:
         print(f"error: {row['path']}: {row['error']}", file=sys.stderr)
     print(f"{faired} faired, {len(skipped)} skipped, {len(failed)} failed; "

@@ -7,8 +7,9 @@ from typing import Any, Dict, Optional, Sequence
 
 COLUMNS = ("path", "vertices", "faces", "epsilon", "status", "error", "iterations",
            "initial_bending_energy", "final_bending_energy", "initial_energy", "final_energy",
-           "max_deviation", "seconds", "worker", "output", "labels")
-"""The columns of the report, in order (``labels``: the surfaces written from a label map)."""
+           "max_deviation", "seconds", "worker", "output", "labels", "options")
+"""The columns of the report, in order (``labels``: the surfaces written from a label map;
+``options``: what the output was made with, which a rerun compares)."""
 
 REPORT_NAME = "report.csv"
 """The report's file name in the output folder."""
@@ -27,16 +28,19 @@ def empty_row(path) -> Row:
     return row
 
 
-def write_report(path: Path, rows: Sequence[Optional[Row]]) -> None:
-    """Write the rows known so far, in input order, through a temporary file."""
-    partial = path.with_name(f".{path.stem}.partial{path.suffix}")
+def write_report(path: Path, rows: Sequence[Optional[Row]],
+                 kept: Sequence[Row] = ()) -> None:
+    """Write the rows known so far through a temporary file: those of an earlier report that
+    this batch does not redo (`kept`, in their order) first, then this batch's in input
+    order."""
+    partial = path.with_name(f".{path.stem}.partial-{os.getpid()}{path.suffix}")
     try:
         with open(partial, "w", newline="", encoding="utf-8") as stream:
             writer = csv.writer(stream)
             writer.writerow(COLUMNS)
-            for row in rows:
+            for row in [*kept, *rows]:
                 if row is not None:
-                    writer.writerow([_cell(row[column]) for column in COLUMNS])
+                    writer.writerow([_cell(row.get(column)) for column in COLUMNS])
         os.replace(partial, path)
     except BaseException:
         try:
@@ -47,11 +51,12 @@ def write_report(path: Path, rows: Sequence[Optional[Row]]) -> None:
 
 
 def read_report(path: Path) -> Dict[str, Row]:
-    """The rows of an earlier report by path; none if it is missing or not a report."""
+    """The rows of an earlier report by path, in its order; none if it is missing or not a
+    report (a column it lacks, as in a report of an earlier version, is missing in each row)."""
     try:
         with open(path, newline="", encoding="utf-8") as stream:
             reader = csv.DictReader(stream)
-            if tuple(reader.fieldnames or ()) != COLUMNS:
+            if not {"path", "status"} <= set(reader.fieldnames or ()):
                 return {}
             rows = {}
             for cells in reader:

@@ -2,8 +2,8 @@
 
 import contextlib
 import inspect
+import json
 import os
-import shutil
 import time
 import uuid
 from pathlib import Path
@@ -18,17 +18,22 @@ from ._epsilon import mesh_epsilon, parse_eps
 from ._progress import Bar
 from ._report_file import REPORT_NAME, Row, empty_row, read_report, write_report
 
+# The statuses of a file that was faired, whose output the batch wrote.
+DONE = ("converged", "iteration_limit_reached", "cancelled")
+
 
 class Batch:
     """A checked batch: its inputs, outputs, options and the rows known before it runs."""
 
-    def __init__(self, paths, out_dir, eps, force, fair_options, label_format="ply"):
+    def __init__(self, paths, out_dir, eps, force, fair_options, label_format="ply", repair=False):
         if isinstance(paths, (str, bytes, os.PathLike)):
             raise TypeError("paths must be a sequence of paths, not a single path")
         self.inputs = [Path(os.path.abspath(os.fspath(p))) for p in paths]
         self.out_dir = Path(os.path.abspath(os.fspath(out_dir)))
+        self.eps_text = eps
         self.eps = parse_eps(eps)
         self.force = bool(force)
+        self.repair = bool(repair)
         self.fair_options = _check_fair_options(fair_options)
         self.label_format = _check_label_format(label_format)
         # A label map's surfaces go into a folder named after it.
@@ -38,8 +43,18 @@ class Batch:
         self.report_path = self.out_dir / REPORT_NAME
         self._check_names()
         self.rows: List[Optional[Row]] = [None] * len(self.inputs)
+        self.kept: List[Row] = []
         self.skipped: List[int] = []
         self.todo: List[int] = []
+        self.replace: List[bool] = [self.force] * len(self.inputs)
+
+    def options(self, index: int) -> str:
+        """What input `index`'s output is made with, as its report row records it."""
+        if label_map_stem(self.inputs[index]) is not None:
+            made = {"label_format": self.label_format, **self.fair_options}
+        else:
+            made = {"eps": list(self.eps), "repair": self.repair, **self.fair_options}
+        return json.dumps(made, sort_keys=True)
 
     def _check_names(self):
         seen = {}
@@ -52,23 +67,34 @@ class Batch:
             if output.name == REPORT_NAME:
                 raise ValueError(f"{path}: an input named {REPORT_NAME} would overwrite the "
                                  "report")
-            if _same_file(path, output):
-                raise ValueError(f"{path}: the output would overwrite the input; "
+            if _same_file(path, output) or any(_same_file(other, output) for other in self.inputs):
+                raise ValueError(f"{path}: its output {output} would overwrite an input; "
                                  "choose another output folder")
 
     def plan(self):
-        """Sort the inputs into those to fair and those done, whose rows are then known."""
+        """Sort the inputs into those to fair, those done with the same options (skipped, their
+        rows kept) and those whose output exists but that this batch did not write (an error,
+        unless `force`): nothing the batch did not write is replaced."""
         previous = read_report(self.report_path)
         for index, (path, output) in enumerate(zip(self.inputs, self.outputs)):
-            if self.force or not output.exists():
+            row = previous.pop(str(path), None)
+            ours = (row is not None and row["status"] in DONE and row["output"] == str(output))
+            if not output.exists():
                 self.todo.append(index)
-                continue
-            self.skipped.append(index)
-            row = previous.get(str(path))
-            if row is None or row["status"] == "error":
+            elif ours and row.get("options") == self.options(index) and not self.force:
+                self.skipped.append(index)
+                self.rows[index] = row
+            elif ours or self.force or output.is_dir():
+                # A label map's folder only gets its own files, which its task checks.
+                self.replace[index] = self.force or ours
+                self.todo.append(index)
+            else:
                 row = empty_row(path)
-                row.update(status="skipped", output=str(output))
-            self.rows[index] = row
+                row.update(status="error", error=f"FileExistsError: {output} exists and this "
+                           "batch's report does not record it as its output; force=True "
+                           "(--force) replaces it")
+                self.rows[index] = row
+        self.kept = list(previous.values())
 
     def run(self, client, workers, threads, cores, show_progress) -> List[Row]:
         import_distributed()  # before anything is written
@@ -81,7 +107,7 @@ class Batch:
                 self._run_on(client, threads=threads or 0, show_progress=show_progress)
             else:
                 self._run_locally(workers, threads, cores, show_progress)
-        write_report(self.report_path, self.rows)
+        write_report(self.report_path, self.rows, self.kept)
         return list(self.rows)
 
     def _run_locally(self, workers, threads, cores, show_progress):
@@ -107,12 +133,14 @@ class Batch:
         for index in sorted(self.todo, key=lambda i: -_size(self.inputs[i])):
             key = f"fair_file-{self.inputs[index].name}-{token}-{index}"
             path, output = str(self.inputs[index]), str(self.outputs[index])
+            job = dict(path=path, output=output, options=self.options(index), threads=threads,
+                       replace=self.replace[index], fair_options=self.fair_options)
             if label_map_stem(path) is None:
-                future = client.submit(_fair_file, path, output, self.eps, self.fair_options,
-                                       threads, key=key, pure=False)
+                future = client.submit(_fair_file, job, self.eps, self.repair, key=key,
+                                       pure=False)
             else:
-                future = client.submit(_fair_label_map, path, output, self.label_format,
-                                       self.fair_options, threads, key=key, pure=False)
+                future = client.submit(_fair_label_map, job, self.label_format, key=key,
+                                       pure=False)
             futures[future] = index
         bar = Bar(len(self.inputs), len(self.skipped)) if show_progress else None
         try:
@@ -126,7 +154,7 @@ class Batch:
                     row.update(status="error", error=_describe(error))
                 self.rows[index] = row
                 # Rewritten after each file, so an interrupted batch leaves what it did.
-                write_report(self.report_path, self.rows)
+                write_report(self.report_path, self.rows, self.kept)
                 if bar is not None:
                     bar.update(row)
         except BaseException:
@@ -169,64 +197,60 @@ def _task(path: str):
     row["seconds"] = time.perf_counter() - start
 
 
-def _fair_file(path: str, output: str, eps: Tuple[str, float], fair_options: Dict[str, Any],
-               threads: int) -> Row:
-    """The task of one file, run in a worker: read, fair, write; never raises."""
+def _fair_file(job: Dict[str, Any], eps: Tuple[str, float], repair: bool) -> Row:
+    """The task of one file, run in a worker: read, fair, write; never raises. A PLY file's
+    properties are carried to its output, with each vertex's deviation and at_bound."""
+    path, output = job["path"], job["output"]
     with _task(path) as row:
-        set_max_threads(threads)
-        V, F = read_mesh(path)
+        set_max_threads(job["threads"])
+        ply = path.lower().endswith(".ply")
+        V, F, *carried = read_mesh(path, properties=ply, repair=repair)
         row.update(vertices=int(V.shape[0]), faces=int(F.shape[0]))
         epsilon = mesh_epsilon(eps, V, F)
         row["epsilon"] = epsilon
-        W, report = fair(V, F, epsilon, **fair_options)
+        W, report = fair(V, F, epsilon, **job["fair_options"])
+        properties = carried[0] if carried and ply else None
+        if properties is not None:
+            properties.vertex["deviation"] = report.deviation
+            properties.vertex["at_bound"] = report.at_bound.astype("uint8")
         # The temporary keeps the extension: the writer is chosen by it.
         stem, ext = os.path.splitext(os.path.basename(output))
-        partial = os.path.join(os.path.dirname(output), f".{stem}.partial{ext}")
+        partial = os.path.join(os.path.dirname(output), f".{stem}.partial-{os.getpid()}{ext}")
         try:
-            write_mesh(partial, W, F)
+            write_mesh(partial, W, F, properties=properties)
+            if os.path.exists(output) and not job["replace"]:
+                raise FileExistsError(f"{output} appeared during the run; it is not replaced")
             os.replace(partial, output)
-        except BaseException:
+        finally:
             with contextlib.suppress(OSError):
                 os.remove(partial)
-            raise
-        _record(row, report, output)
+        _record(row, report, output, job["options"])
     return row
 
 
-def _fair_label_map(path: str, output: str, label_format: str, fair_options: Dict[str, Any],
-                    threads: int) -> Row:
+def _fair_label_map(job: Dict[str, Any], label_format: str) -> Row:
     """The task of one label map, run in a worker: its labels' surfaces, faired together within
-    their voxels, each written in world coordinates to ``output/label_<L>.<format>``; the
-    folder is renamed into place once complete. Never raises."""
+    their voxels, each written in world coordinates to ``output/label_<L>.<format>``, which
+    gets nothing else (`LabelSurfaces.write`). Never raises."""
+    path, output = job["path"], job["output"]
     with _task(path) as row:
-        set_max_threads(threads)
+        set_max_threads(job["threads"])
         labels, affine = read_label_map(path)
-        result = label_surfaces(labels, affine=affine, **fair_options)
+        result = label_surfaces(labels, affine=affine, **job["fair_options"])
         row.update(vertices=int(result.vertices.shape[0]), faces=int(result.faces.shape[0]),
                    labels=int(result.labels.size))
-        partial = os.path.join(os.path.dirname(output), f".{os.path.basename(output)}.partial")
-        shutil.rmtree(partial, ignore_errors=True)
-        try:
-            os.makedirs(partial)
-            for label in result.labels.tolist():
-                surface = os.path.join(partial, f"label_{label}.{label_format}")
-                write_mesh(surface, *result.surface(label))
-            shutil.rmtree(output, ignore_errors=True)  # an earlier output, with force
-            os.replace(partial, output)
-        except BaseException:
-            shutil.rmtree(partial, ignore_errors=True)
-            raise
-        _record(row, result.report, output)
+        result.write(output, label_format, force=job["replace"])
+        _record(row, result.report, output, job["options"])
     return row
 
 
-def _record(row: Row, report, output: str) -> None:
+def _record(row: Row, report, output: str, options: str) -> None:
     """What a finished task's row says of its fairing's `report` and where its output went."""
     row.update(status=report.status.value.lower(), iterations=report.number_of_iterations,
                initial_bending_energy=report.initial_bending_energy,
                final_bending_energy=report.final_bending_energy,
                initial_energy=report.initial_energy, final_energy=report.final_energy,
-               max_deviation=report.max_deviation, output=output)
+               max_deviation=report.max_deviation, output=output, options=options)
 
 
 def _describe(error: BaseException) -> str:
