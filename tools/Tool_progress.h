@@ -34,6 +34,8 @@ public:
   // The iteration callback.
   bool operator()(std::size_t iteration, double energy)
   {
+    if(m_phase.compare(0, 7, "fairing") != 0)
+      m_phase = "fairing"; // the check and the start are done
     const double elapsed = seconds();
     if(m_terminal ? elapsed - m_shown < 0.1 : iteration % 100 != 0)
       return true;

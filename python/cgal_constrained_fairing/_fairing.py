@@ -1,7 +1,11 @@
 """`fair` and the measures of a mesh, on numpy arrays."""
 
+# The annotations stay text: help(fair) shows ``ArrayLike``, not numpy's expansion of it.
+from __future__ import annotations
+
 import sys
 import time
+import warnings
 from typing import Callable, Optional, Tuple, Union
 
 import numpy as np
@@ -241,7 +245,19 @@ def call_options(epsilon, bound=None, method=None, **settings):
         options.method = getattr(_core.Method, choice_argument(method, "method", _METHODS).upper())
     options.given = {name: SETTING_ARGUMENTS[name](value)
                      for name, value in settings.items() if value is not None}
+    _warn_without_effect(options.given, options.method)
     return options
+
+
+def _warn_without_effect(given, method) -> None:
+    """A warning for each keyword that the call takes but that changes nothing in it."""
+    accurate = given.get("objective") == _core.Objective.ACCURATE
+    if "fidelity_weight" in given and not accurate:
+        warnings.warn("fidelity_weight has no effect without objective='accurate'", UserWarning,
+                      stacklevel=4)
+    if "conjugate_gradient_iterations" in given and method != _core.Method.ACTIVE_SET_NEWTON:
+        warnings.warn("conjugate_gradient_iterations has no effect without "
+                      "method='active_set_newton'", UserWarning, stacklevel=4)
 
 
 def result_of(outcome):
@@ -285,11 +301,13 @@ def _region_indices(region, m):
 
 
 class _Progress:
-    """The callback that `fair` hands to the library for its `progress` argument."""
+    """The callback that `fair` hands to the library for its `progress` argument. The bar
+    counts iterations with no total while the stopping rule has not stopped them (how many
+    remain is not known), says so before the first (the input's check and the smoothed start),
+    and ends at 100 % at the iteration where the call stopped."""
 
     def __init__(self, progress, options):
         self._progress = progress
-        self._total = options.max_iterations()
         self._bar = None
         self._shown = 0.0
 
@@ -303,12 +321,17 @@ class _Progress:
         try:
             from tqdm import tqdm
         except ImportError:
+            self._write("fairing: checking the input and starting")
             return self._line
-        self._bar = tqdm(total=self._total, desc="fairing", unit="it", leave=False)
+        self._bar = tqdm(total=None, desc="fairing (checking, starting)", unit="it")
         return self._tick
 
-    def __exit__(self, *exc):
+    def __exit__(self, kind, *exc):
         if self._bar is not None:
+            if kind is None:
+                self._bar.total = self._bar.n
+                self._bar.set_description("fairing", refresh=False)
+                self._bar.refresh()
             self._bar.close()
         elif self._shown:
             sys.stderr.write("\r\x1b[K")
@@ -316,15 +339,20 @@ class _Progress:
         return False
 
     def _tick(self, iteration, energy):
+        if self._bar.n == 0:
+            self._bar.set_description("fairing", refresh=False)
         self._bar.update(iteration - self._bar.n)
         self._bar.set_postfix_str(f"energy {energy:.6g}", refresh=False)
 
     def _line(self, iteration, energy):
         now = time.monotonic()
         if now - self._shown >= 0.5:
-            self._shown = now
-            sys.stderr.write(f"\rfairing: iteration {iteration}, energy {energy:.6g}\x1b[K")
-            sys.stderr.flush()
+            self._write(f"fairing: iteration {iteration}, energy {energy:.6g}")
+
+    def _write(self, text):
+        self._shown = time.monotonic()
+        sys.stderr.write(f"\r{text}\x1b[K")
+        sys.stderr.flush()
 
 
 def _measure(measure, vertices, faces):

@@ -1,5 +1,7 @@
 """Mesh files through CGAL's readers and writers: OFF, OBJ, PLY and STL."""
 
+from __future__ import annotations
+
 import os
 from dataclasses import dataclass, field
 from typing import Dict, List, Mapping, Optional, Tuple, Union

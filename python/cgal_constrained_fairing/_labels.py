@@ -1,5 +1,7 @@
 """Label maps to surfaces: one closed surface per label, the interfaces shared exactly."""
 
+from __future__ import annotations
+
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -136,7 +138,7 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     Parameters
     ----------
     labels : array_like, shape (I, J, K)
-        The label of each voxel, any integer dtype; voxel ``[i, j, k]`` has its centre at
+        The label of each voxel, any integer dtype (a boolean mask is label 1); voxel ``[i, j, k]`` has its centre at
         ``origin + (i, j, k) * spacing``. Never modified.
     spacing : sequence of 3 floats
         The distance between voxel centres along each axis, positive (NIfTI's ``pixdim``).
@@ -190,8 +192,10 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     L = np.asarray(labels)
     if L.ndim != 3:
         raise invalid(f"labels must be a 3-D array (got {L.ndim} dimensions)")
+    if L.dtype.kind == "b":  # a mask: label 1 inside
+        L = L.astype(np.uint8)
     if L.dtype.kind not in "iu":
-        raise invalid(f"labels must have an integer dtype (got {L.dtype})")
+        raise invalid(f"labels must have an integer or boolean dtype (got {L.dtype})")
     frame = None
     if affine is not None:
         if tuple(spacing) != (1, 1, 1) or tuple(origin) != (0, 0, 0):
@@ -211,6 +215,9 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     present = np.unique(FL)
     present = present[present != background]
     if F.shape[0] == 0:
+        if labels_to_mesh is not None:
+            raise InputError(Defect.NO_FACES, f"none of labels_to_mesh {list(labels_to_mesh)} is "
+                             f"in the label map (its labels: {_labels_of(labels, background)})")
         raise InputError(Defect.NO_FACES, "the label map holds nothing but the background label")
     report = None
     W = V.copy()
@@ -221,6 +228,13 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     if frame is not None:
         W, V, F = frame.to_world(W), frame.to_world(V), frame.faces(F)
     return LabelSurfaces(W, F, FL, V, H, report, present)
+
+
+def _labels_of(labels, background) -> list:
+    """The labels of a map other than the background, the first twenty."""
+    present = np.unique(np.asarray(labels))
+    present = present[present != background].tolist()
+    return present[:20] + (["..."] if len(present) > 20 else [])
 
 
 class _Frame:

@@ -435,3 +435,49 @@ def test_ply_properties_survive_the_batch(client, tmp_path):
     assert np.array_equal(carried.vertex["deviation"], np.linalg.norm(W - V, axis=1))
     assert (carried.vertex["deviation"] <= row["epsilon"]).all()
     assert carried.comments == "scanner 7\n"
+
+
+def descendants(pid):
+    """The process ids below `pid`, from /proc."""
+    children = {}
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        children.setdefault(int(fields[1]), []).append(int(entry.name))
+    found, stack = [], [pid]
+    while stack:
+        for child in children.get(stack.pop(), []):
+            found.append(child)
+            stack.append(child)
+    return found
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="needs /proc to see the workers")
+def test_ctrl_c_is_one_line(tmp_path):
+    """Ctrl-C on a terminal reaches the whole process group, the workers too: the batch says
+    one line, and no worker a traceback."""
+    import signal
+    import time
+    paths = copy_inputs(tmp_path / "in", good=("bunny00.off", "elephant_noisy.off"), bad=False)
+    package_parent = str(Path(cf.__file__).resolve().parents[1])
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [package_parent] + [p for p in [os.environ.get("PYTHONPATH")] if p]))
+    process = subprocess.Popen(
+        [sys.executable, "-m", "cgal_constrained_fairing.batch", *map(str, paths), "-o",
+         str(tmp_path / "out"), "--workers", "1", "--accurate"],
+        env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        start_new_session=True)
+    deadline = time.monotonic() + 60
+    while len(descendants(process.pid)) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)  # the nanny and its worker
+    time.sleep(0.5)
+    os.killpg(process.pid, signal.SIGINT)
+    out, err = process.communicate(timeout=120)
+    if process.returncode == 0:
+        pytest.skip("the batch ended before it was interrupted")
+    assert process.returncode == 130, err
+    assert err.splitlines() == [f"interrupted; report: {tmp_path / 'out' / 'report.csv'}"], err

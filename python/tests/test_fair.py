@@ -410,10 +410,15 @@ def test_an_exception_in_progress_stops_the_run_and_is_raised(sphere):
 
 def test_progress_true_shows_a_bar(sphere, capsys):
     V, F = sphere
-    W, _ = cf.fair(V, F, 0.05, progress=True)
+    W, report = cf.fair(V, F, 0.05, progress=True)
     W0, _ = cf.fair(V, F, 0.05)
     assert np.array_equal(W, W0)
-    assert "fairing" in capsys.readouterr().err
+    shown = capsys.readouterr().err
+    assert "fairing" in shown
+    pytest.importorskip("tqdm")
+    # It ends at 100 %, at the iteration where the stopping rule stopped the call.
+    last = shown.replace("\r", "\n").strip().splitlines()[-1]
+    assert "100%" in last and f"{report.number_of_iterations}/{report.number_of_iterations}" in last
 
 
 def test_calls_from_two_threads_at_once(sphere, elephant):

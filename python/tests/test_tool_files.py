@@ -246,3 +246,29 @@ def test_repair_keeps_a_bad_index_an_error(tmp_path):
     done = run("--repair", "--eps", "0.1", BAD_INPUT / "face_index_out_of_range.ply", tmp_path / "o.off")
     assert done.returncode != 0 and "refers to vertex" in done.stderr
     assert "--repair" not in done.stderr
+
+
+def test_a_terminal_sees_the_phases_before_the_iterations(tmp_path):
+    """On a terminal the tool shows what it does from the start (reading, checking and
+    starting), then the iterations."""
+    import pty
+    main, side = pty.openpty()
+    process = subprocess.Popen([TOOL, DATA / "elephant_noisy.off", tmp_path / "out.off"],
+                               stdout=subprocess.PIPE, stderr=side)
+    os.close(side)
+    shown = b""
+    while True:
+        try:
+            chunk = os.read(main, 4096)
+        except OSError:  # the tool closed its end
+            break
+        if not chunk:
+            break
+        shown += chunk
+    process.communicate(timeout=120)
+    os.close(main)
+    text = shown.decode()
+    assert process.returncode == 0
+    phases = [text.find(word) for word in ("reading ", "checking and starting", "fairing: iteration",
+                                           "writing ")]
+    assert all(at >= 0 for at in phases) and phases == sorted(phases), text

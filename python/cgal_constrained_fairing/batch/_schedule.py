@@ -4,6 +4,8 @@ import contextlib
 import inspect
 import json
 import os
+import signal
+import threading
 import time
 import uuid
 from pathlib import Path
@@ -113,8 +115,9 @@ class Batch:
     def _run_locally(self, workers, threads, cores, show_progress):
         distributed = import_distributed()
         workers = min(workers or cores, cores, len(self.todo))
-        cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
-                                           processes=True, dashboard_address=None)
+        with _workers_ignore_ctrl_c():
+            cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
+                                               processes=True, dashboard_address=None)
         try:
             # Not the default client: the caller's own stays the default.
             with distributed.Client(cluster, set_as_default=False) as client:
@@ -163,6 +166,21 @@ class Batch:
         finally:
             if bar is not None:
                 bar.close()
+
+
+@contextlib.contextmanager
+def _workers_ignore_ctrl_c():
+    """Processes started in the block ignore Ctrl-C, as they inherit an ignored SIGINT: on a
+    terminal it reaches the whole process group, and the batch, which closes its cluster, is
+    to answer it with one line rather than each worker with a traceback."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def available_cores() -> int:

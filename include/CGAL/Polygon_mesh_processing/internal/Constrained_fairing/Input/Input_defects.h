@@ -13,7 +13,10 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace CGAL {
@@ -35,6 +38,20 @@ struct Input_error
 namespace defect_message {
 
 inline std::string vertex(std::size_t v) { return "vertex " + std::to_string(v); }
+
+// The shortest decimal text that reads back as `x` ("0.01", "-1e-07", "nan"), not
+// std::to_string's fixed six decimals, which show -1e-07 as -0.000000.
+inline std::string number(double x)
+{
+  char text[32];
+  for(int digits = 6; digits <= 17; ++digits)
+  {
+    std::snprintf(text, sizeof(text), "%.*g", digits, x);
+    if(!std::isfinite(x) || std::strtod(text, nullptr) == x)
+      break;
+  }
+  return text;
+}
 inline std::string faces(std::size_t f, std::size_t g)
 {
   return "faces " + std::to_string(f) + " and " + std::to_string(g);
@@ -128,25 +145,25 @@ inline Input_error non_finite_coordinate_error(std::size_t v)
 
 inline Input_error invalid_epsilon_error(double epsilon)
 {
-  return {Defect::INVALID_EPSILON, "epsilon must be a positive finite number (got " + std::to_string(epsilon) + ")"};
+  return {Defect::INVALID_EPSILON, "epsilon must be a positive finite number (got " + defect_message::number(epsilon) + ")"};
 }
 
 inline Input_error invalid_fidelity_weight_error(double mu)
 {
   return {Defect::INVALID_FIDELITY_WEIGHT,
-          "fidelity_weight must be finite and non-negative (" + std::to_string(mu) + ")"};
+          "fidelity_weight must be finite and non-negative (" + defect_message::number(mu) + ")"};
 }
 
 inline Input_error invalid_sliver_barrier_weight_error(double nu)
 {
   return {Defect::INVALID_SLIVER_BARRIER_WEIGHT,
-          "sliver_barrier_weight must be finite and non-negative (" + std::to_string(nu) + ")"};
+          "sliver_barrier_weight must be finite and non-negative (" + defect_message::number(nu) + ")"};
 }
 
 inline Input_error invalid_feature_angle_error(double degrees)
 {
   return {Defect::INVALID_FEATURE_ANGLE,
-          "feature_angle must be a number of degrees strictly between 0 and 180 (" + std::to_string(degrees) + ")"};
+          "feature_angle must be a number of degrees strictly between 0 and 180 (" + defect_message::number(degrees) + ")"};
 }
 
 inline Input_error box_with_ball_error()
@@ -157,14 +174,14 @@ inline Input_error box_with_ball_error()
 // `whose`: "box_half_extents" for the uniform ones, "the box half-extents of vertex v" otherwise.
 inline Input_error invalid_box_extents_error(const std::string& whose, double hx, double hy, double hz)
 {
-  return {Defect::INVALID_BOX_EXTENTS, whose + " must be finite and non-negative (" + std::to_string(hx) + ", " +
-                                    std::to_string(hy) + ", " + std::to_string(hz) + ")"};
+  return {Defect::INVALID_BOX_EXTENTS, whose + " must be finite and non-negative (" + defect_message::number(hx) + ", " +
+                                    defect_message::number(hy) + ", " + defect_message::number(hz) + ")"};
 }
 
 inline Input_error invalid_tolerance_error(std::size_t v, double tolerance)
 {
   return {Defect::INVALID_TOLERANCE,
-          defect_message::vertex(v) + " has a negative, NaN or infinite tolerance (" + std::to_string(tolerance) + ")"};
+          defect_message::vertex(v) + " has a negative, NaN or infinite tolerance (" + defect_message::number(tolerance) + ")"};
 }
 
 inline Input_error invalid_box_center_error(std::size_t v)
