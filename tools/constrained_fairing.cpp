@@ -68,12 +68,14 @@ input position (Hildebrandt and Polthier, SGP 2007).
         and whether it ended on its bound ("at_bound", 0 or 1). An OUT that is IN is refused
         unless --in-place is given
 
-  A NIfTI-1 label map IN (.nii or .nii.gz: a segmentation, one integer label per voxel, 0 the
-  background) gives one closed surface per label, its interfaces shared exactly with its
-  neighbours', faired together with every point within its voxel, in world coordinates (the
-  file's sform, else its qform, else its voxel sizes). OUT is then a folder, default IN's name
-  with _surfaces in the current folder, which gets label_<L>.ply for each label L (see
-  --label-format); of the options, only --accurate applies.
+  A label map IN (a segmentation, one integer label per voxel, 0 the background: NIfTI-1 .nii
+  or .nii.gz, INRIMAGE-4 .inr or .inr.gz as CGAL's Mesh_3 reads them, numpy's .npy) gives one
+  closed surface per label, its interfaces shared exactly with its neighbours', faired together
+  with every point within its voxel, in world coordinates (a NIfTI file's sform, else its qform,
+  else its voxel sizes; an INR file's voxel sizes and origin; a .npy file's voxel indices). OUT
+  is then a folder, default IN's name with _surfaces in the current folder (seg.inr.gz:
+  seg_surfaces), which gets label_<L>.ply for each label L (see --label-format); of the
+  options, only --accurate applies.
 
 options:
   --eps EPS                the tolerance: absolute (0.002), relative to the mean edge length h
@@ -344,10 +346,8 @@ int fair_label_map(const Options& options, const std::string& in)
   const std::string format = options.label_format.value_or("ply");
   if(format != "ply" && format != "off" && format != "obj" && format != "stl")
     return fail("--label-format must be ply, off, obj or stl (got " + format + ")");
-  std::string name = std::filesystem::path(in).filename().string();
-  name = name.substr(0, name.size() - (name.size() > 3 && name.compare(name.size() - 3, 3, ".gz") == 0 ? 7 : 4));
-  const std::filesystem::path out =
-    options.positional.size() > 1 ? std::filesystem::path(options.positional[1]) : std::filesystem::path(name + "_surfaces");
+  const std::filesystem::path out = options.positional.size() > 1 ? std::filesystem::path(options.positional[1])
+                                                                  : std::filesystem::path(FE::label_map_stem(in) + "_surfaces");
   const std::filesystem::path parent = std::filesystem::absolute(out).parent_path();
   if(!std::filesystem::is_directory(parent))
     return fail("cannot write " + out.string() + " (no folder " + parent.string() + ")");
@@ -442,7 +442,8 @@ int main(int argc, char* argv[])
   if(Constrained_fairing_front_end::is_label_map_file(in))
     return fair_label_map(options, in);
   if(options.label_format)
-    return fail("--label-format applies to a label map (.nii, .nii.gz) only");
+    return fail(std::string("--label-format applies to a label map (") + Constrained_fairing_front_end::label_map_extensions +
+                ") only");
   const std::string out = options.positional.size() > 1 ? options.positional[1] : default_output(in);
 
   if(!writable_format(out))
