@@ -112,9 +112,7 @@ inline std::string write_label_surfaces(const Label_nets& nets, const Constraine
 // IN's name without its label map extension, with _surfaces, in the current folder.
 inline std::filesystem::path default_label_output(const std::string& in)
 {
-  std::string name = std::filesystem::path(in).filename().string();
-  name = name.substr(0, name.size() - (name.size() > 3 && name.compare(name.size() - 3, 3, ".gz") == 0 ? 7 : 4));
-  return name + "_surfaces";
+  return Constrained_fairing_front_end::label_map_stem(in) + "_surfaces";
 }
 
 // The tool on the label map `in`.

@@ -38,12 +38,13 @@ input position (Hildebrandt and Polthier, SGP 2007).
         property "deviation") and whether it ended on its bound ("at_bound", 0 or 1). An OUT
         that is IN is refused unless --in-place is given
 
-  A NIfTI-1 label map IN (.nii or .nii.gz: a segmentation, one integer label per voxel, 0 the
-  background) gives one closed surface per label, its interfaces shared exactly with its
-  neighbours', faired together with every point within its voxel, in world coordinates (the
-  file's sform, else its qform, else its voxel sizes). OUT is then a folder, default IN's name
-  with _surfaces in the current folder, which gets label_<L>.ply for each label L (see
-  --label-format) and nothing else: a new folder appears complete, an existing one keeps its
+  A label map IN (a segmentation, one integer label per voxel, 0 the background: NIfTI-1 .nii
+  or .nii.gz, INRIMAGE-4 .inr or .inr.gz as CGAL's Mesh_3 reads them, numpy's .npy) gives one
+  closed surface per label, its interfaces shared exactly with its neighbours', faired together
+  with every point within its voxel, in world coordinates (a NIfTI file's sform, else its qform,
+  else its voxel sizes; an INR file's voxel sizes and origin; a .npy file's voxel indices). OUT
+  is then a folder, default IN's name with _surfaces in the current folder (seg.inr.gz:
+  seg_surfaces), which gets label_<L>.ply for each label L (see --label-format) and nothing else: a new folder appears complete, an existing one keeps its
   other files, and a label_<L> file already there is refused unless --force is given. An OUT
   that is IN or an existing file is refused. Of the options, only --accurate, --label-format
   and --force apply.
@@ -211,7 +212,7 @@ int main(int argc, char* argv[])
   if(Constrained_fairing_front_end::is_label_map_file(in))
     return fair_label_map(options, in);
   if(options.label_format || options.force)
-    return fail(std::string(options.label_format ? "--label-format" : "--force") +
-                " applies to a label map (.nii, .nii.gz) only");
+    return fail(std::string(options.label_format ? "--label-format" : "--force") + " applies to a label map (" +
+                Constrained_fairing_front_end::label_map_extensions + ") only");
   return fair_mesh_file(options);
 }

@@ -8,7 +8,8 @@ K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy a
 - `read_mesh` and `write_mesh` read and write OFF, OBJ, PLY and STL files;
 - `label_surfaces` makes a label map's surfaces, one closed surface per label with the interfaces
   shared exactly, faired together within their voxels; `fair_interfaces` fairs such a
-  multi-label triangle soup; `read_label_map` reads a label map from a NIfTI or .npy file;
+  multi-label triangle soup; `read_label_map` reads a label map from a NIfTI, INRIMAGE-4 or
+  .npy file;
 - `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files, meshes and label
   maps, on a Dask cluster, also from the command line:
   ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.

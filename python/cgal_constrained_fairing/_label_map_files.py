@@ -1,11 +1,13 @@
-"""Label map files: NIfTI (with nibabel) and numpy's ``.npy``."""
+"""Label map files: NIfTI (with nibabel), INRIMAGE-4 (CGAL's images) and numpy's ``.npy``."""
 
 import os
 from typing import Optional, Tuple
 
 import numpy as np
 
-LABEL_MAP_SUFFIXES = (".nii.gz", ".nii", ".npy")
+from . import _core
+
+LABEL_MAP_SUFFIXES = (".nii.gz", ".nii", ".inr.gz", ".inr", ".npy")
 """The extensions of the label map files that `read_label_map` reads."""
 
 
@@ -24,14 +26,17 @@ def read_label_map(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarr
     A NIfTI-1 or NIfTI-2 file (``.nii``, ``.nii.gz``) is read with nibabel: its voxels as
     stored (a segmentation's integers; stored floats must hold whole numbers) and its
     ``affine``: the sform if its code is set, else the qform if its code is set, else the
-    voxel sizes alone (the standard's method 1), as the command-line tool reads them. A
-    ``.npy`` file holds the array alone; its affine is the identity (voxel ``[i, j, k]`` at
+    voxel sizes alone (the standard's method 1), as the command-line tool reads them. An
+    INRIMAGE-4 file (``.inr``, ``.inr.gz``, the images of CGAL's Mesh_3) is read by the
+    command-line tool's own reader, so that both agree bit for bit: its voxels as int64, its
+    affine ``diag(VX, VY, VZ)`` plus the origin ``(TX, TY, TZ)``, as CGAL places the voxels.
+    A ``.npy`` file holds the array alone; its affine is the identity (voxel ``[i, j, k]`` at
     ``(i, j, k)``). A 4-D image with one volume is read as 3-D.
 
     Parameters
     ----------
     path : str or os.PathLike
-        A ``.nii``, ``.nii.gz`` or ``.npy`` file.
+        A ``.nii``, ``.nii.gz``, ``.inr``, ``.inr.gz`` or ``.npy`` file.
 
     Returns
     -------
@@ -46,8 +51,9 @@ def read_label_map(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarr
     FileNotFoundError
         No such file.
     ValueError
-        An unknown extension, a file that is not a valid NIfTI or ``.npy`` file, an array that
-        is not 3-D, or voxels that are not whole numbers.
+        An unknown extension, a file that is not a valid NIfTI, INRIMAGE-4 or ``.npy`` file
+        (the message names the defect), an array that is not 3-D, or voxels that are not whole
+        numbers.
     ImportError
         A NIfTI file without nibabel (Debian's ``python3-nibabel``).
     """
@@ -56,7 +62,10 @@ def read_label_map(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarr
         raise FileNotFoundError(f"no such file: {path}")
     if label_map_stem(path) is None:
         raise ValueError(f"{path}: a label map must be a {', '.join(LABEL_MAP_SUFFIXES)} file")
-    if path.lower().endswith(".npy"):
+    lower = path.lower()
+    if lower.endswith((".inr", ".inr.gz")):
+        return _core.read_label_map_file(path)
+    if lower.endswith(".npy"):
         try:
             data = np.load(path, allow_pickle=False)
         except (OSError, ValueError) as error:

@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 
 #include "front_end/Epsilon_grammar.h"
+#include "front_end/Label_map_file.h"
 #include "front_end/Mean_edge_length.h"
 #include "front_end/Mesh_file.h"
 #include "front_end/Output_files.h"
@@ -624,6 +625,30 @@ std::vector<FE::Ply_property> properties_of(const py::list& list)
   return properties;
 }
 
+// A label map file as the tool reads it (front_end/Label_map_file.h), as (labels, affine): the
+// labels an (I, J, K) int64 array that owns the reader's vector, the affine 4 x 4.
+py::tuple read_label_map_file(const std::string& path)
+{
+  auto map = std::make_unique<FE::Label_map>();
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    error = FE::read_label_map(path, *map);
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+  Float_array affine({py::ssize_t(4), py::ssize_t(4)});
+  for(std::size_t r = 0; r < 4; ++r)
+    for(std::size_t c = 0; c < 4; ++c)
+      affine.mutable_data()[4 * r + c] = r < 3 ? map->affine[r][c] : double(c == 3);
+  auto labels = std::make_unique<std::vector<std::int64_t> >(std::move(map->labels));
+  const py::capsule owner(labels.get(), [](void* p) { delete static_cast<std::vector<std::int64_t>*>(p); });
+  const std::int64_t* data = labels.release()->data();
+  const std::array<std::size_t, 3>& n = map->size;
+  Index_array array({py::ssize_t(n[0]), py::ssize_t(n[1]), py::ssize_t(n[2])}, data, owner);
+  return py::make_tuple(array, affine);
+}
+
 void write_mesh(const std::string& path, const Float_array& vertices, const Index_array& faces)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
@@ -841,6 +866,7 @@ PYBIND11_MODULE(_core, m)
   m.def("label_surface", &label_surface, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),
         py::arg("label"));
   m.def("read_mesh", &read_mesh, py::arg("path"));
+  m.def("read_label_map_file", &read_label_map_file, py::arg("path"));
   m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
   m.def("write_files_into_folder", &write_files_into_folder, py::arg("source"), py::arg("folder"), py::arg("names"),
         py::arg("meshes"), py::arg("force"));

@@ -1,8 +1,10 @@
 """Label map files: `read_label_map`, `label_surfaces` with an affine, and the batch on them."""
 
+import gzip
 import os
 import subprocess
 import sys
+import tarfile
 from pathlib import Path
 
 import numpy as np
@@ -32,10 +34,35 @@ AFFINE[:3, 3] = [10, -20, 5]
 
 
 def save_nifti(path, labels, affine):
-    image = nibabel.Nifti1Image(labels, affine)
+    image = nibabel.Nifti1Image(labels, affine, dtype=labels.dtype)
     image.set_sform(affine, code=1)
     image.set_qform(affine, code=1)
     nibabel.save(image, str(path))
+
+
+# The affine of an INR file's voxel sizes and origin, which float32 (NIfTI's) holds exactly.
+INR_SIZES = (0.5, 0.75, 2.5)
+INR_ORIGIN = (10.0, -20.0, 5.25)
+INR_AFFINE = np.diag([*INR_SIZES, 1.0])
+INR_AFFINE[:3, 3] = INR_ORIGIN
+
+
+def save_inr(path, labels, sizes=INR_SIZES, origin=INR_ORIGIN, big_endian=False, fields=()):
+    """An INRIMAGE-4 file as CGAL's ImageIO writes it: the header padded to 256 bytes, the
+    voxels x fastest; gzip-compressed for a .gz name. `fields` replace or add header lines."""
+    kind = {"u": "unsigned fixed", "i": "signed fixed", "f": "float"}[labels.dtype.kind]
+    header = {"XDIM": labels.shape[0], "YDIM": labels.shape[1], "ZDIM": labels.shape[2],
+              "VDIM": 1, "TYPE": kind, "PIXSIZE": f"{8 * labels.dtype.itemsize} bits",
+              "SCALE": "2**0", "CPU": "sun" if big_endian else "decm",
+              "VX": sizes[0], "VY": sizes[1], "VZ": sizes[2],
+              "TX": origin[0], "TY": origin[1], "TZ": origin[2]}
+    header.update(fields)
+    text = "#INRIMAGE-4#{\n" + "".join(f"{key}={value}\n" for key, value in header.items())
+    text += "\n" * ((252 - len(text)) % 256) + "##}\n"
+    order = ">" if big_endian else "<"
+    data = text.encode() + labels.astype(labels.dtype.newbyteorder(order)).tobytes(order="F")
+    with (gzip.open if str(path).endswith(".gz") else open)(path, "wb") as file:
+        file.write(data)
 
 
 def triangles_of(V, F):
@@ -94,6 +121,49 @@ def test_read_label_map_takes_whole_floats_and_refuses_the_rest(tmp_path):
         cf.read_label_map(tmp_path / "labels.txt")
     with pytest.raises(FileNotFoundError):
         cf.read_label_map(tmp_path / "missing.nii")
+
+
+@pytest.mark.parametrize("name, dtype, big_endian", [
+    ("map.inr", np.uint8, False), ("map.inr.gz", np.int16, True), ("MAP.INR", np.uint32, True),
+    ("map.inr.gz", np.int64, False), ("map.inr", np.float32, True), ("map.inr", np.float64, False),
+])
+def test_read_label_map_inr_as_nifti(tmp_path, name, dtype, big_endian):
+    """An INR file and the NIfTI file of the same map, voxel sizes and origin: the same labels and
+    affine, so the same surfaces, bit for bit."""
+    labels = two_labels().astype(dtype)
+    save_inr(tmp_path / name, labels, big_endian=big_endian)
+    save_nifti(tmp_path / "map.nii.gz", labels, INR_AFFINE)
+    read, affine = cf.read_label_map(tmp_path / name)
+    nifti, nifti_affine = cf.read_label_map(tmp_path / "map.nii.gz")
+    assert read.dtype == np.int64 and read.shape == labels.shape
+    assert np.array_equal(read, labels) and np.array_equal(read, nifti)
+    assert np.array_equal(affine, INR_AFFINE) and np.array_equal(affine, nifti_affine)
+    ours, theirs = cf.label_surfaces(read, affine=affine), cf.label_surfaces(nifti, affine=nifti_affine)
+    for field in ("vertices", "faces", "face_labels", "box_half_extents", "labels"):
+        assert np.array_equal(getattr(ours, field), getattr(theirs, field)), field
+
+
+@pytest.mark.parametrize("name, fields, message", [
+    ("vector.inr", {"VDIM": 3}, "VDIM=3: a label map has one value per voxel"),
+    ("type.inr", {"TYPE": "complex"}, "unknown TYPE=complex"),
+    ("bits.inr.gz", {"PIXSIZE": "12 bits"}, "PIXSIZE=12 bits: not a type of voxels"),
+    ("cpu.inr", {"CPU": "vax"}, "unknown CPU=vax"),
+    ("size.inr", {"VY": "-1"}, "VY=-1 is not a positive voxel size"),
+    ("truncated.inr", {"ZDIM": 20}, "truncated (14 x 12 x 20 voxels announced)"),
+])
+def test_read_label_map_refuses_bad_inr(tmp_path, name, fields, message):
+    save_inr(tmp_path / name, two_labels(), fields=fields)
+    with pytest.raises(ValueError) as error:
+        cf.read_label_map(tmp_path / name)
+    assert str(error.value).startswith(f"{tmp_path / name}: ") and message in str(error.value)
+
+
+def test_read_label_map_names_the_inr_voxel_that_is_no_label(tmp_path):
+    voxels = two_labels().astype(np.float32)
+    voxels[4, 5, 6] = 2.5
+    save_inr(tmp_path / "fraction.inr", voxels)
+    with pytest.raises(ValueError, match=r"voxel \(4, 5, 6\) is not a whole number"):
+        cf.read_label_map(tmp_path / "fraction.inr")
 
 
 def test_label_surfaces_in_world_coordinates():
@@ -197,6 +267,85 @@ def test_tool_rejects_bad_label_maps(tmp_path):
     assert done.returncode != 0 and "only --accurate" in done.stderr
 
 
+@pytest.mark.skipif(TOOL is None, reason="CONSTRAINED_FAIRING_TOOL names no built tool")
+def test_tool_reads_inr_and_npy_as_nifti(tmp_path):
+    """The tool on an .inr.gz and on a .npy: the same surface files, byte for byte, as on the
+    NIfTI file of the same map and affine; the same surfaces as Python's; outputs named after
+    the map (seg.inr.gz -> seg_surfaces)."""
+    labels = two_labels()
+    save_inr(tmp_path / "seg.inr.gz", labels, big_endian=True)
+    save_nifti(tmp_path / "seg.nii", labels, INR_AFFINE)
+    np.save(tmp_path / "grains.npy", np.asfortranarray(labels.astype(np.uint16)))
+    save_nifti(tmp_path / "grains.nii", labels, np.eye(4))
+    outputs = {}
+    for name in ("seg.inr.gz", "seg.nii", "grains.npy", "grains.nii"):
+        run = tmp_path / name.replace(".", "_")
+        run.mkdir()
+        done = subprocess.run([TOOL, "--label-format", "off", str(tmp_path / name)], capture_output=True,
+                              text=True, timeout=300, cwd=run)
+        assert done.returncode == 0, done.stderr
+        stem = name.split(".")[0]
+        assert os.listdir(run) == [f"{stem}_surfaces"]
+        outputs[name] = {f: (run / f"{stem}_surfaces" / f).read_bytes() for f in ("label_3.off", "label_7.off")}
+    assert outputs["seg.inr.gz"] == outputs["seg.nii"]
+    assert outputs["grains.npy"] == outputs["grains.nii"]
+    for name, affine in (("seg.inr.gz", INR_AFFINE), ("grains.npy", np.eye(4))):
+        read, read_affine = cf.read_label_map(tmp_path / name)
+        assert np.array_equal(read_affine, affine)
+        expected = cf.label_surfaces(read, affine=read_affine)
+        for label in (3, 7):
+            V, F = cf.read_mesh(tmp_path / name.replace(".", "_") / f"{name.split('.')[0]}_surfaces"
+                                / f"label_{label}.off")
+            W, G = expected.surface(label)
+            assert np.allclose(triangles_of(V, F), triangles_of(W, G), rtol=0, atol=1e-12)
+
+
+@pytest.mark.skipif(TOOL is None, reason="CONSTRAINED_FAIRING_TOOL names no built tool")
+def test_tool_rejects_bad_inr_and_npy(tmp_path):
+    save_inr(tmp_path / "vector.inr", two_labels(), fields={"VDIM": 2})
+    (tmp_path / "magic.inr.gz").write_bytes(gzip.compress(b"#INRIMAGE-5#{\n##}\n"))
+    np.save(tmp_path / "complex.npy", two_labels().astype(np.complex64))
+    (tmp_path / "short.npy").write_bytes((b"\x93NUMPY\x01\x00" + b"\x76\x00" + b"{'descr'"))
+    for name, message in (("vector.inr", "VDIM=2: a label map has one value per voxel"),
+                          ("magic.inr.gz", "not an INRIMAGE-4 file"),
+                          ("complex.npy", "dtype '<c8' is not a label map's"),
+                          ("short.npy", "truncated header")):
+        out = tmp_path / f"out_{name}"
+        done = subprocess.run([TOOL, str(tmp_path / name), str(out)], capture_output=True, text=True,
+                              timeout=60)
+        assert done.returncode != 0, name
+        assert done.stderr.startswith(f"error: {tmp_path / name}: ") and message in done.stderr, done.stderr
+        assert done.stderr.count("\n") == 1
+        assert not out.exists()
+
+
+CGAL_DATA = Path("/usr/share/doc/libcgal-dev/data.tar.gz")
+LIVER = Path("/tmp/cgaldata/data/images/liver.inr.gz")
+
+
+@pytest.mark.skipif(not LIVER.exists() and not CGAL_DATA.exists(),
+                    reason="no CGAL data (libcgal-dev's data.tar.gz)")
+def test_cgal_liver_as_nifti(tmp_path):
+    """CGAL's liver: its four labels and voxel sizes; the NIfTI file of the same map and voxel
+    sizes gives the same labels, and the affine but for NIfTI's float32."""
+    liver = LIVER
+    if not liver.exists():
+        with tarfile.open(CGAL_DATA) as data:
+            (tmp_path / "liver.inr.gz").write_bytes(
+                data.extractfile("data/images/liver.inr.gz").read())
+        liver = tmp_path / "liver.inr.gz"
+    labels, affine = cf.read_label_map(liver)
+    assert labels.shape == (438, 353, 165)
+    assert np.unique(labels).tolist() == [0, 84, 85, 127, 255]
+    assert np.array_equal(affine, np.diag([0.617188, 0.617188, 1.33333, 1.0]))
+    image = nibabel.Nifti1Image(labels.astype(np.uint8), None)
+    image.header.set_zooms((0.617188, 0.617188, 1.33333))
+    nibabel.save(image, str(tmp_path / "liver.nii.gz"))
+    nifti, nifti_affine = cf.read_label_map(tmp_path / "liver.nii.gz")
+    assert np.array_equal(nifti, labels)
+    assert np.allclose(nifti_affine, affine, rtol=1e-7, atol=0)
+
+
 distributed = pytest.importorskip("distributed")
 
 
@@ -295,3 +444,19 @@ def test_tool_and_python_agree_on_an_atlas(tmp_path):
         assert is_closed(G) and volume(W, G) > 0
         V, F = cf.read_mesh(out / f"label_{label}.off")
         assert np.allclose(triangles_of(V, F), triangles_of(W, G), rtol=0, atol=1e-12)
+
+
+@pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+def test_batch_on_an_inr_file(tmp_path):
+    from cgal_constrained_fairing.batch import fair_files
+    save_inr(tmp_path / "cgal.inr.gz", two_labels().astype(np.uint8))
+    rows = fair_files([tmp_path / "cgal.inr.gz"], tmp_path / "out", workers=1, label_format="off")
+    assert rows[0]["status"] == "converged" and rows[0]["output"] == str(tmp_path / "out" / "cgal")
+    labels, affine = cf.read_label_map(tmp_path / "cgal.inr.gz")
+    assert np.array_equal(affine, INR_AFFINE)
+    expected = cf.label_surfaces(labels, affine=affine)
+    for label in (3, 7):
+        V, F = cf.read_mesh(tmp_path / "out" / "cgal" / f"label_{label}.off")
+        W, G = expected.surface(label)
+        assert np.array_equal(V, W) and np.array_equal(F, G)
+

@@ -2,10 +2,11 @@
 
 `fair_files` fairs each file in a task of its own, writes each result into an output folder
 under the input's file name (same format), and keeps a table of what was done in
-``OUT_DIR/report.csv``. Label maps (NIfTI ``.nii``, ``.nii.gz`` and ``.npy``) give one closed
-surface per label, faired together within their voxels, in a folder named after the map. A
-file that cannot be read or is rejected gets its error in the table and the batch goes on; a
-second run skips the files already done and retries the others.
+``OUT_DIR/report.csv``. Label maps (NIfTI ``.nii``, ``.nii.gz``, INRIMAGE-4 ``.inr``,
+``.inr.gz`` and ``.npy``) give one closed surface per label, faired together within their
+voxels, in a folder named after the map. A file that cannot be read or is rejected gets its
+error in the table and the batch goes on; a second run skips the files already done and
+retries the others.
 
 On this machine, one worker process per core::
 
@@ -63,7 +64,7 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     ``out_dir / <its file name>`` (same format) through a temporary file, so that an output
     file is always complete; a PLY file's vertex and face properties are carried to its output,
     with each vertex's ``deviation`` and ``at_bound``. Each label map (``.nii``, ``.nii.gz``,
-    ``.npy``) is read with `read_label_map`, its surfaces made and faired together within
+    ``.inr``, ``.inr.gz``, ``.npy``) is read with `read_label_map`, its surfaces made and faired together within
     their voxels with `label_surfaces` (its affine applied: the surfaces are in world
     coordinates), and each label's closed surface written to
     ``out_dir / <its name> / label_<L>.<label_format>`` (`LabelSurfaces.write`: the folder
@@ -78,8 +79,8 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     ----------
     paths : sequence of str or os.PathLike
         The mesh files (OFF, OBJ, PLY or STL) and label maps (NIfTI ``.nii``, ``.nii.gz``,
-        numpy ``.npy``), by extension; their outputs' names must differ. Relative paths are
-        taken from the current directory.
+        INRIMAGE-4 ``.inr``, ``.inr.gz``, numpy ``.npy``), by extension; their outputs' names
+        must differ. Relative paths are taken from the current directory.
     out_dir : str or os.PathLike
         The output folder, created if missing; it must not hold an input (outputs would
         overwrite inputs).

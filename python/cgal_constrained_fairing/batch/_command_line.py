@@ -26,7 +26,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(
         prog="python3 -m cgal_constrained_fairing.batch",
         description="Fair mesh files (OFF, OBJ, PLY, STL) on a Dask cluster, each within "
-                    "epsilon of its input, and label maps (NIfTI .nii, .nii.gz, numpy .npy) "
+                    "epsilon of its input, and label maps (NIfTI .nii, .nii.gz, INRIMAGE-4 .inr, "
+                    ".inr.gz, numpy .npy) "
                     "into one closed surface per label, faired together within their voxels. "
                     "Meshes go to OUT_DIR under the inputs' file names, a label map's surfaces "
                     "to OUT_DIR/<its name>/label_<L>.<format> in world coordinates, with a "
