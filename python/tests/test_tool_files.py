@@ -272,3 +272,29 @@ def test_a_terminal_sees_the_phases_before_the_iterations(tmp_path):
     phases = [text.find(word) for word in ("reading ", "checking and starting", "fairing: iteration",
                                            "writing ")]
     assert all(at >= 0 for at in phases) and phases == sorted(phases), text
+
+
+CGAL_DATA = Path("/usr/share/doc/libcgal-dev/data.tar.gz")  # Debian's libcgal-demo
+
+
+@pytest.mark.skipif(not CGAL_DATA.is_file(), reason="needs CGAL's demo data (libcgal-demo)")
+@pytest.mark.parametrize("name", ["pig.stl", "polygon_mesh.off"])
+def test_repair_fairs_cgals_demo_meshes(tmp_path, name):
+    """Two of CGAL's demo meshes that are soups with non-manifold vertices: refused with the
+    hint, faired with --repair within the bound, and Python's repair gives the tool's mesh."""
+    import tarfile
+    with tarfile.open(CGAL_DATA) as archive:
+        member = archive.getmember(f"data/meshes/{name}")
+        (tmp_path / name).write_bytes(archive.extractfile(member).read())
+    refused = run(tmp_path / name, tmp_path / "refused.off")
+    assert refused.returncode != 0 and "--repair" in refused.stderr
+    done = run("--repair", tmp_path / name, tmp_path / "out.ply")
+    assert done.returncode == 0, done.stderr
+    assert "points duplicated at non-manifold" in done.stdout
+    V, F, repaired = cf.read_mesh(tmp_path / name, repair=True)
+    assert repaired.repair.startswith("repaired: ")
+    W, G, carried = cf.read_mesh(tmp_path / "out.ply", properties=True)
+    assert np.array_equal(F, G)
+    eps = 0.25 * cf.mean_edge_length(V, F)
+    assert (np.linalg.norm(W - V, axis=1) <= eps).all()
+    assert np.array_equal(W, cf.fair(V, F, eps)[0])

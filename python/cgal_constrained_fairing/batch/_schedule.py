@@ -8,6 +8,7 @@ import signal
 import threading
 import time
 import uuid
+import warnings
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Tuple
 
@@ -115,7 +116,10 @@ class Batch:
     def _run_locally(self, workers, threads, cores, show_progress):
         distributed = import_distributed()
         workers = min(workers or cores, cores, len(self.todo))
-        with _workers_ignore_ctrl_c():
+        with _workers_ignore_ctrl_c(), warnings.catch_warnings():
+            # Its scheduler's HTTP routes move to a free port when another cluster holds
+            # Dask's default one: nothing the user asked about, as the batch has no dashboard.
+            warnings.filterwarnings("ignore", message="Port .* is already in use")
             cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
                                                processes=True, dashboard_address=None)
         try:
