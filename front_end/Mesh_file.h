@@ -232,12 +232,13 @@ inline std::string vertex_property_values(const std::string& path, const Ply_pro
 // than three vertices, `triangulated` of them; returns an empty string or the reason. With
 // `face_polygon`, also the polygon each face of `mesh` comes from (a polygon's triangles all
 // come from it), which carries the file's face properties to the triangles. `repair_hint` ends
-// the message of a defect that the soup repair mends.
+// the message of a defect that the soup repair mends; `defect`, if given, gets the soup's.
 template <typename Point, typename TriangleMesh>
 std::string make_triangle_mesh(const std::string& path, const std::vector<Point>& points,
                                const std::vector<std::vector<std::size_t> >& polygons, TriangleMesh& mesh,
                                std::size_t& triangulated, std::vector<std::size_t>* face_polygon = nullptr,
-                               const std::string& repair_hint = std::string())
+                               const std::string& repair_hint = std::string(),
+                               CGAL::Polygon_mesh_processing::Constrained_fairing_defect* defect = nullptr)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using Defect = CGAL::Polygon_mesh_processing::Constrained_fairing_defect;
@@ -246,6 +247,8 @@ std::string make_triangle_mesh(const std::string& path, const std::vector<Point>
     const bool repairable = soup.defect == Defect::NON_MANIFOLD_EDGE || soup.defect == Defect::NON_MANIFOLD_VERTEX ||
                             soup.defect == Defect::INCONSISTENT_ORIENTATION ||
                             (soup.defect == Defect::INVALID_FACE && soup.message.find("but there are") == std::string::npos);
+    if(defect != nullptr)
+      *defect = soup.defect;
     return path + ": " + soup.message + (repairable ? repair_hint : std::string());
   }
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
@@ -272,6 +275,9 @@ struct Mesh_file_contents
   Ply_properties properties;
   std::size_t triangulated = 0;
   std::optional<Soup_repair> repair;
+  // The defect that made the soup no mesh, for front ends that name it as the library does.
+  CGAL::Polygon_mesh_processing::Constrained_fairing_defect defect =
+    CGAL::Polygon_mesh_processing::Constrained_fairing_defect::NONE;
 };
 
 // Reads `path` into `mesh`: with `properties`, a PLY file's vertex and face properties too; with
@@ -304,7 +310,7 @@ std::string read_triangle_mesh_file(const std::string& path, bool properties, bo
   }
   std::vector<std::size_t> face_polygon;
   error = make_triangle_mesh(path, points, polygons, mesh, contents.triangulated, &face_polygon,
-                             repair ? std::string() : repair_hint);
+                             repair ? std::string() : repair_hint, &contents.defect);
   if(!error.empty())
     return error;
   for(std::size_t polygon : face_polygon)

@@ -11,6 +11,7 @@ from numpy.typing import ArrayLike
 
 from . import _core
 from ._arrays import faces_array, vertices_array
+from ._errors import InputError
 
 FORMATS = (".off", ".obj", ".ply", ".stl")
 
@@ -91,14 +92,22 @@ def read_mesh(path: "os.PathLike[str] | str", *, properties: bool = False,
     FileNotFoundError
         No such file.
     ValueError
-        The file cannot be read as a mesh, or its polygons cannot be triangulated.
+        The file cannot be read as a mesh, or its polygons cannot be triangulated; with
+        `properties` or `repair`, an `InputError` naming the defect of a soup that is no mesh
+        (``NON_MANIFOLD_EDGE``, ...), as `fair` would.
     """
     path = os.fspath(path)
     if not os.path.isfile(path):
         raise FileNotFoundError(f"no such file: {path}")
     if not (properties or repair):
         return _core.read_mesh(path)
-    V, F, vertex, face, comments, dropped, summary = _core.read_mesh_with_properties(path, bool(repair))
+    read = _core.read_mesh_with_properties(path, bool(repair))
+    if len(read) == 2:
+        defect, message = read
+        if defect.name == "NONE":
+            raise ValueError(message)
+        raise InputError(defect.name, message)
+    V, F, vertex, face, comments, dropped, summary = read
     return V, F, MeshProperties(_typed(vertex), _typed(face), comments, list(dropped), summary)
 
 

@@ -592,7 +592,8 @@ py::tuple read_mesh(const std::string& path)
 }
 
 // Reads a file as the tool does with a PLY's properties and, with `repair`, --repair: as
-// (vertices, faces, vertex properties, face properties, comments, dropped, repair summary).
+// (vertices, faces, vertex properties, face properties, comments, dropped, repair summary), or
+// (defect, message) if it is no mesh (the defect NONE where the reading failed).
 py::tuple read_mesh_with_properties(const std::string& path, bool repair)
 {
   Mesh mesh;
@@ -600,10 +601,10 @@ py::tuple read_mesh_with_properties(const std::string& path, bool repair)
   std::string error;
   {
     py::gil_scoped_release release;
-    error = FE::read_triangle_mesh_file(path, true, repair, mesh, contents, " (read_mesh(path, repair=True) makes a mesh of such a soup)");
+    error = FE::read_triangle_mesh_file(path, true, repair, mesh, contents, "; repair=True makes a mesh of such a soup");
   }
   if(!error.empty())
-    throw py::value_error(error);
+    return py::make_tuple(contents.defect, error);
   const py::tuple arrays = mesh_arrays(mesh);
   const FE::Ply_properties& p = contents.properties;
   return py::make_tuple(arrays[0], arrays[1], property_list(FE::ply_properties_of(p.vertex, contents.vertex_origin)),

@@ -481,3 +481,18 @@ def test_ctrl_c_is_one_line(tmp_path):
         pytest.skip("the batch ended before it was interrupted")
     assert process.returncode == 130, err
     assert err.splitlines() == [f"interrupted; report: {tmp_path / 'out' / 'report.csv'}"], err
+
+
+def test_a_ply_soup_that_is_no_mesh_is_named_as_an_off_one(client, tmp_path):
+    """A PLY input is read with its properties, and its defect is the library's name for it,
+    as for any other format."""
+    V, F = cf.read_mesh(BAD_INPUT / "non_manifold_edge.off")
+    (tmp_path / "in").mkdir()
+    path = tmp_path / "in" / "non_manifold_edge.ply"
+    cf.write_mesh(path, V, F)
+    with pytest.raises(cf.InputError) as error:
+        cf.read_mesh(path, properties=True)
+    assert error.value.defect == cf.Defect.NON_MANIFOLD_EDGE
+    assert "repair=True" in error.value.message
+    [row] = fair_files([path], tmp_path / "out", client, progress=False)
+    assert row["status"] == "error" and row["error"].startswith("NON_MANIFOLD_EDGE: ")
