@@ -15,9 +15,9 @@
 //  - the volume term (Label_volumes.h): its gradient against central finite differences, on
 //    its own and as the objective adds it in the bending energy's tiles, on the triangles in the
 //    mesh's order; a label whose surface is not closed is not held, the slack of a block of
-//    voxels is that of its six faces; on a torus whose tube is 5 voxels across the faired
-//    surface lies inside the raw nets on average (the bending energy alone kept it at or outside
-//    them);
+//    8^3 voxels is that of its six faces, a block of 6^3 (thinner than the mean edge length)
+//    has none; on a torus whose tube is 5 voxels across the faired surface lies inside the raw
+//    nets on average (the bending energy alone kept it at or outside them);
 //  - the crossing search of the repair (Crossing_repair.h) against every pair tested with CGAL's
 //    do_intersect, over all pairs and over the pairs with a few changed triangles, on triangles
 //    of sizes over three orders of magnitude; the sine of a triangle's smallest angle on known
@@ -254,22 +254,32 @@ void check_label_volumes()
   CHECK(none_closed.add_gradient(X, G_none, nullptr) == 0 && none_closed.value(X) == 0);
   CHECK((G_none.array() == 0.5).all());
 
-  // A block of 6 x 6 x 6 voxels: six caps of 36 voxel faces, each off by a uniform fraction of
-  // the spacing, a standard deviation of 36 / sqrt(12) each.
-  const std::array<std::size_t, 3> size{10, 10, 10};
-  std::vector<Label> labels(1000, 0);
-  for(std::size_t i = 2; i < 8; ++i)
-    for(std::size_t j = 2; j < 8; ++j)
-      for(std::size_t k = 2; k < 8; ++k)
-        labels[(i * 10 + j) * 10 + k] = 1;
-  Soup block;
-  PMP::label_surface_nets(labels.data(), size, {1., 1., 1.}, {0, 0, 0}, block.points, block.triangles,
-                          block.face_labels, block.half_extents);
-  const Oriented_soup oriented_block(block);
-  const CF::Label_volumes block_volumes(oriented_block.triangles, oriented_block.sides, oriented_block.X0, 1);
-  CHECK(block_volumes.size() == 2);
+  // A block of k^3 voxels and its background (two labels).
+  const auto block_volumes = [](std::size_t k) {
+    const std::size_t m = k + 4;
+    std::vector<Label> labels(m * m * m, 0);
+    for(std::size_t i = 2; i < k + 2; ++i)
+      for(std::size_t j = 2; j < k + 2; ++j)
+        for(std::size_t l = 2; l < k + 2; ++l)
+          labels[(i * m + j) * m + l] = 1;
+    Soup block;
+    PMP::label_surface_nets(labels.data(), {m, m, m}, {1., 1., 1.}, {0, 0, 0}, block.points, block.triangles,
+                            block.face_labels, block.half_extents);
+    const Oriented_soup oriented_block(block);
+    return CF::Label_volumes(oriented_block.triangles, oriented_block.sides, oriented_block.X0, 1);
+  };
+  // 8 x 8 x 8 voxels: six caps of 64 voxel faces, each off by a uniform fraction of the spacing, a
+  // standard deviation of 64 / sqrt(12) each.
+  const CF::Label_volumes large = block_volumes(8);
+  CHECK(large.size() == 2);
   for(std::size_t l = 0; l < 2; ++l)
-    CHECK(std::abs(block_volumes.slack(l) - std::sqrt(6.) * 36 / std::sqrt(12.)) < 1e-9);
+    CHECK(std::abs(large.slack(l) - std::sqrt(6.) * 64 / std::sqrt(12.)) < 1e-9);
+  // 6 x 6 x 6 voxels: a volume over area of one voxel, under the mean edge length (1.14): held at
+  // the count, no slack.
+  const CF::Label_volumes small = block_volumes(6);
+  CHECK(small.size() == 2);
+  for(std::size_t l = 0; l < 2; ++l)
+    CHECK(small.slack(l) == 0);
 }
 
 // A torus whose tube is 5 voxels across, its axis tilted against the grid: the faired points'

@@ -4,13 +4,14 @@
 // Each label's volume held at its input value, to within that value's own uncertainty, on a
 // multi-label surface:
 //
-//   W = w * sum over labels l of n_l * (e_l / (A_l h))^2,   e_l = V_l - V0_l beyond +-s_l,
+//   W = w * sum over labels l of n_l * (e_l / (A_l u_l))^2,   e_l = V_l - V0_l beyond +-s_l,
 //
 // over the labels whose surface is closed, V_l the volume that surface encloses (the divergence
-// theorem over its triangles), V0_l that of the input, A_l the input surface's area, h the
-// input's mean edge length and n_l the label's points: e_l / A_l is how far the surface has
-// moved outwards on average, so W charges each point w times the square of that offset in units
-// of h, as the bending energy charges each hinge about its squared angle.
+// theorem over its triangles), V0_l that of the input, A_l the input surface's area, n_l the
+// label's points and u_l the smaller of h, the input's mean edge length, and the label's
+// thickness t_l = |V0_l| / A_l (the mean offset that would empty it): e_l / A_l is how far the
+// surface has moved outwards on average, so W charges each point w times the square of that
+// offset in units of u_l, as the bending energy charges each hinge about its squared angle.
 //
 // Why: surface nets through the dual cells' centres are the voxels' own faces, so V0_l is the
 // label's voxel count times a voxel's volume, an unbiased estimate of the region's volume, while
@@ -23,6 +24,17 @@
 // the steps around it. The slack s_l is the resulting standard deviation: held to the count
 // exactly, a ball of radius 24 voxels on 1 x 1 x 3 voxels ended 7.2 times closer to the truth
 // than the raw nets instead of 8.9 (doc/design_notes.md).
+//
+// Labels thinner than h (t_l < h: a few voxels across, or a sheet or tube a voxel or two thick)
+// are held at their count: the voxels resolve no cap of them, so nothing but the count tells
+// their volume, while their boxes let the whole label shrink or swell and the bending energy,
+// which does not see size, takes whatever the slack allows (a small block on an interface
+// flattens into it, alone it swells; the slack is 71 % of one voxel's volume, 35 % of a block of
+// 2 x 2 x 2). Their offset is measured in units of t_l, since in units of h losing the whole
+// label would cost each point at most (t_l / h)^2, 1 / 36 for one voxel; and each point pays
+// for its three hinges (a closed surface of n points has about 3 n edges), as the bending energy
+// that would flatten the label into the interfaces around it is paid per hinge: n_l is 3 n_l
+// there, so that a fraction f lost costs 3 w n_l f^2 (doc/design_notes.md, "Small labels").
 //
 // Evaluation: the volumes are summed per block of triangles, in parallel, then over the blocks
 // in order. A triangle's part of the gradient depends on its points and its labels' pulls
@@ -108,16 +120,25 @@ public:
       for(auto s = labels_at.begin(v); s != labels_at.end(v); ++s)
         if(s == labels_at.begin(v) || *s != *(s - 1))
           ++points[*s];
-    m_weight.resize(L);
-    for(std::size_t l = 0; l < L; ++l)
-      m_weight[l] = area[l] > 0 ? weight * points[l] / (area[l] * h * area[l] * h) : 0;
     volumes(X0, m_targets);
     m_volumes.resize(L);
     m_pull.resize(L);
     m_slack = count_slack(X0, L);
+    m_weight.resize(L);
+    for(std::size_t l = 0; l < L; ++l)
+    {
+      const double thickness = area[l] > 0 ? std::abs(m_targets[l]) / area[l] : 0;
+      const double unit = thickness > 0 ? (std::min)(h, thickness) : h;
+      const bool thin = thickness < h; // held at its count, each point for its three hinges
+      const double charged = thin ? 3 * points[l] : points[l];
+      m_weight[l] = area[l] > 0 ? weight * charged / (area[l] * unit * area[l] * unit) : 0;
+      if(thin)
+        m_slack[l] = 0;
+    }
   }
 
-  // The number of labels whose volume is held, and the slack of the l-th of them.
+  // The number of labels whose volume is held, and the slack of the l-th of them (0 for a label
+  // thinner than the input's mean edge length).
   std::size_t size() const { return m_targets.size(); }
   std::size_t number_of_triangles() const { return m_sides.size(); }
   double slack(std::size_t l) const { return m_slack[l]; }

@@ -74,7 +74,8 @@ constexpr double default_curve_weight = 1;
 // against the bending energy's hinges. Held exactly, from 1 to 30 the phantoms of
 // benchmark/label_phantoms came out alike (4.60 to 4.67 times closer to the truth than the raw
 // nets); above 1 the smallest angle fell on generated worst cases and atlases (random voxels of
-// three labels: 2.9 degrees with no term, 3.3 at 1, 0.35 at 3).
+// three labels: 2.9 degrees with no term, 3.3 at 1, 0.35 at 3). A label thinner than the mean
+// edge length is charged for each of its points' three hinges (Label_volumes.h).
 constexpr double default_label_volume_weight = 1;
 
 // The stopping rule of each method when the user sets none: the quasi-Newton method's energy
