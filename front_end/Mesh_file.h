@@ -90,7 +90,8 @@ std::string read_polygon_soup_file(const std::string& path, std::vector<Point>& 
 namespace internal {
 
 // The visitor of triangulate_faces() that gives each new triangle the polygon of the face it
-// splits; copied by the call, so it holds the table by pointer.
+// splits, faces being numbered as a Surface_mesh numbers them; copied by the call, so it holds
+// the table by pointer.
 template <typename TriangleMesh>
 struct Face_origin_visitor
 {

@@ -5,7 +5,6 @@ command line reads as users write it."""
 import os
 import signal
 import subprocess
-import time
 from pathlib import Path
 
 import numpy as np
@@ -118,8 +117,10 @@ def test_an_interrupted_run_leaves_earlier_outputs(tmp_path):
         (out / name).write_text(f"earlier {name}\n")
     before = snapshot(tmp_path)
     process = subprocess.Popen([TOOL, "--force", "big.nii", "out"], cwd=tmp_path,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    time.sleep(1.0)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    # Interrupted in the fairing: at its first progress line, iteration 100.
+    line = process.stderr.readline()
+    assert line.startswith("iteration "), line
     process.send_signal(signal.SIGINT)
     process.communicate(timeout=300)
     if process.returncode == 0:
@@ -298,3 +299,31 @@ def test_repair_fairs_cgals_demo_meshes(tmp_path, name):
     eps = 0.25 * cf.mean_edge_length(V, F)
     assert (np.linalg.norm(W - V, axis=1) <= eps).all()
     assert np.array_equal(W, cf.fair(V, F, eps)[0])
+
+
+def test_a_polygons_property_goes_to_each_of_its_triangles(tmp_path):
+    """A grid of 3 x 3 quads, each with its own face value: each triangle of the output
+    carries its quad's value."""
+    n = 4
+    points = [(i, j, 0.1 * ((i * 7 + j * 3) % 5)) for j in range(n) for i in range(n)]
+    quads = [(j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i)
+             for j in range(n - 1) for i in range(n - 1)]
+    with open(tmp_path / "quads.ply", "w") as stream:
+        stream.write(f"ply\nformat ascii 1.0\nelement vertex {len(points)}\nproperty double x\n"
+                     "property double y\nproperty double z\n"
+                     f"element face {len(quads)}\nproperty list uchar int vertex_indices\n"
+                     "property ushort segment\nend_header\n")
+        for p in points:
+            stream.write(f"{p[0]} {p[1]} {p[2]}\n")
+        for k, q in enumerate(quads):
+            stream.write(f"4 {' '.join(map(str, q))} {100 + k}\n")
+    done = run(tmp_path / "quads.ply", tmp_path / "out.ply")
+    assert done.returncode == 0, done.stderr
+    assert "9 faces with more than three vertices were triangulated" in done.stdout
+    W, G, carried = cf.read_mesh(tmp_path / "out.ply", properties=True)
+    segment = carried.face["segment"]
+    assert segment.dtype == np.uint16 and len(segment) == 18
+    for triangle, value in zip(G, segment):
+        quad = set(quads[value - 100])
+        assert set(triangle.tolist()) <= quad, (triangle, quad)
+    assert sorted(np.unique(segment, return_counts=True)[1].tolist()) == [2] * 9

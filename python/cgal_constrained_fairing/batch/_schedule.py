@@ -33,7 +33,6 @@ class Batch:
             raise TypeError("paths must be a sequence of paths, not a single path")
         self.inputs = [Path(os.path.abspath(os.fspath(p))) for p in paths]
         self.out_dir = Path(os.path.abspath(os.fspath(out_dir)))
-        self.eps_text = eps
         self.eps = parse_eps(eps)
         self.force = bool(force)
         self.repair = bool(repair)
@@ -70,7 +69,7 @@ class Batch:
             if output.name == REPORT_NAME:
                 raise ValueError(f"{path}: an input named {REPORT_NAME} would overwrite the "
                                  "report")
-            if _same_file(path, output) or any(_same_file(other, output) for other in self.inputs):
+            if any(_same_file(other, output) for other in self.inputs):
                 raise ValueError(f"{path}: its output {output} would overwrite an input; "
                                  "choose another output folder")
 
