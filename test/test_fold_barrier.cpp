@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_input.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_input.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>

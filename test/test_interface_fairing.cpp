@@ -33,9 +33,9 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 

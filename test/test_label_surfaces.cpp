@@ -35,7 +35,7 @@
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_maps/Dual_cell.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Triangle_crossings.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Triangle_crossings.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>

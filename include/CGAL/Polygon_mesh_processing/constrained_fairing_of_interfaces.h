@@ -7,7 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_driver.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_input.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_input.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/read_named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>

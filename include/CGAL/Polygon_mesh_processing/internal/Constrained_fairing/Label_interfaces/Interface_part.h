@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The points of a multi-label surface as the driver, the value check and the bounds see them
-// (the counterpart of Fairing_part.h for a mesh).
+// (the counterpart of Mesh_part.h for a mesh).
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H

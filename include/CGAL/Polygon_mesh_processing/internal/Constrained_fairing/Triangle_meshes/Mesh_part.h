@@ -1,8 +1,8 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_PART_H
-#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_PART_H
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_PART_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_PART_H
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -23,7 +23,7 @@ namespace Constrained_fairing {
 // With a face range R: a vertex moves when all its faces are in R; the triangles are R and its
 // neighbours across an edge, and a hinge counts when one of its four vertices moves.
 template <typename TriangleMesh>
-class Fairing_part
+class Mesh_part
 {
 public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -32,7 +32,7 @@ public:
   // `is_constrained(v)`: whether the user fixed vertex v.
   // The whole mesh: no list is stored, the vertices are those of `tmesh` in their order.
   template <typename IsConstrained>
-  Fairing_part(const TriangleMesh& tmesh, const IsConstrained& is_constrained)
+  Mesh_part(const TriangleMesh& tmesh, const IsConstrained& is_constrained)
     : m_tmesh(tmesh), m_size(static_cast<std::size_t>(num_vertices(tmesh)))
   {
     m_fixed.reserve(m_size);
@@ -42,7 +42,7 @@ public:
 
   // A face range; `vertex_index` numbers the vertices in the order of vertices(tmesh).
   template <typename FaceRange, typename VertexIndexMap, typename IsConstrained>
-  Fairing_part(const FaceRange& region, const TriangleMesh& tmesh, const VertexIndexMap& vertex_index,
+  Mesh_part(const FaceRange& region, const TriangleMesh& tmesh, const VertexIndexMap& vertex_index,
                const IsConstrained& is_constrained)
     : m_tmesh(tmesh)
   {
@@ -117,4 +117,4 @@ private:
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_PART_H
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_PART_H

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A triangle mesh as the driver (Fairing_driver.h) fairs it: the whole mesh, or the part that a
-// face range moves (Fairing_part.h). Its vertices are named in messages by their position in
+// face range moves (Mesh_part.h). Its vertices are named in messages by their position in
 // vertices(tmesh); its hinges are its interior edges but its creases (Feature_edges.h: those the
 // user marks and those detected), whose curves are faired as curves (Curve_bending.h) and whose
 // points, which have no surface normal, slide; it has no repair.
@@ -11,10 +11,10 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_part.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Features/Feature_edges.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_part.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Feature_edges.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Mesh_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Curve_network.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
@@ -45,7 +45,7 @@ class Mesh_input
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
-  using Part = Fairing_part<TriangleMesh>;
+  using Part = Mesh_part<TriangleMesh>;
   using Number_map = typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type;
 
 public:

@@ -10,7 +10,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_JUNCTION_LINES_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_JUNCTION_LINES_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Interface_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Curve_network.h>
 
 #include <algorithm>

@@ -18,20 +18,20 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Interface_part.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Junction_lines.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_part.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Junction_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Interface_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Label_volumes.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Crossing_repair.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Crossing_repair.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_type_config.h>
