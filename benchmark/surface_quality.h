@@ -12,15 +12,8 @@
 #define CGAL_CONSTRAINED_FAIRING_BENCHMARK_SURFACE_QUALITY_H
 
 #include "benchmark_support.h"
+#include "../test/triangle_tree.h"
 
-#include <CGAL/version_macros.h>
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_tree.h>
-#if CGAL_VERSION_MAJOR >= 6
-#include <CGAL/AABB_traits_3.h>
-#else
-#include <CGAL/AABB_traits.h>
-#endif
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
@@ -32,12 +25,7 @@
 
 namespace benchmark {
 
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-#if CGAL_VERSION_MAJOR >= 6
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<K, Primitive> >;
-#else
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> >;
-#endif
+using Tree = test::Triangle_tree<K, Mesh>;
 
 struct Quality
 {

@@ -13,17 +13,10 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fidelity_term.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/version_macros.h>
-#if CGAL_VERSION_MAJOR >= 6
-#include <CGAL/AABB_traits_3.h>
-#else
-#include <CGAL/AABB_traits.h>
-#endif
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cmath>
@@ -63,7 +56,8 @@ void check_gradient()
   const double sliver_weight = CF::default_sliver_barrier_weight;
   CF::Fairing_objective plain(hinges, X0, sliver_weight, CF::default_sliver_threshold),
     objective(hinges, X0, sliver_weight, CF::default_sliver_threshold);
-  objective.add_fidelity(1000, [t](std::size_t) { return t; }, anchor);
+  CF::Fidelity_term fidelity(1000, [t](std::size_t) { return t; }, anchor);
+  objective.add_term(fidelity);
 
   // The term by hand: mu / n * sum |x_i - a_i|^2 / t^2 over the n vertices.
   double sum = 0;
@@ -74,7 +68,8 @@ void check_gradient()
   CHECK(objective.value(anchor) == plain.value(anchor));
   // A vertex of tolerance 0 does not move: it has no term and is not counted in n.
   CF::Fairing_objective pinned(hinges, X0, sliver_weight, CF::default_sliver_threshold);
-  pinned.add_fidelity(1000, [t](std::size_t i) { return i == 0 ? 0. : t; }, anchor);
+  CF::Fidelity_term pinned_fidelity(1000, [t](std::size_t i) { return i == 0 ? 0. : t; }, anchor);
+  pinned.add_term(pinned_fidelity);
   const double pinned_by_hand =
     1000 * (sum - (CF::point(X, 0) - CF::point(anchor, 0)).squaredNorm() / (t * t)) / double(num_vertices(m) - 1);
   CHECK(std::abs(pinned.value(X) - plain.value(X) - pinned_by_hand) <= 1e-12 * pinned_by_hand);
@@ -84,21 +79,6 @@ void check_gradient()
   const double error = test::gradient_error(X, G, [&](const CF::Points& Y) { return objective.value(Y); }, 1e-7);
   std::cout << "  objective gradient vs finite differences: relative error " << error << std::endl;
   CHECK(error < 1e-6);
-}
-
-double surface_rms(const Mesh& result, const Mesh& clean)
-{
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-#if CGAL_VERSION_MAJOR >= 6
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<test::K, Primitive> >;
-#else
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<test::K, Primitive> >;
-#endif
-  Tree tree(faces(clean).first, faces(clean).second, clean);
-  double sum = 0;
-  for(auto v : vertices(result))
-    sum += tree.squared_distance(result.point(v));
-  return std::sqrt(sum / double(num_vertices(result)));
 }
 
 // The barrier against slivers of the output `m`, relative to the input `m0`.
@@ -149,8 +129,8 @@ void check_elephant()
     CHECK(near(r_fairest.initial_energy, bending_input + sliver_barrier(noisy, noisy)));
     CHECK(near(r_fairest.final_energy, bending_fairest + sliver_barrier(noisy, fairest)));
     CHECK(r.final_energy - (bending + sliver_barrier(noisy, accurate)) > 1e-6 * r.final_energy);
-    const double rms_accurate = surface_rms(accurate, clean), rms_fairest = surface_rms(fairest, clean),
-                 rms_input = surface_rms(noisy, clean);
+    const double rms_accurate = test::surface_rms(accurate, clean), rms_fairest = test::surface_rms(fairest, clean),
+                 rms_input = test::surface_rms(noisy, clean);
     std::cout << "  elephant, method " << int(method) << ": surface RMS input " << rms_input << ", fairest "
               << rms_fairest << ", accurate " << rms_accurate << "; bending energy fairest "
               << r_fairest.final_bending_energy << ", accurate " << r.final_bending_energy << std::endl;

@@ -221,7 +221,7 @@ void check_label_volumes()
   CHECK(reordered);
   CF::Label_volumes in_mesh_order(mesh.triangles, mesh_sides, X0, CF::default_label_volume_weight);
   CF::Fairing_objective objective(mesh, X0, 0, CF::default_sliver_threshold);
-  objective.add_label_volumes(in_mesh_order);
+  objective.add_term(in_mesh_order);
   CF::Points G_objective;
   const double objective_value = objective.value_and_gradient(X, G_objective);
   CHECK(objective_value > 0 && objective_value == in_mesh_order.value(X));

@@ -10,6 +10,8 @@
 
 #include "front_end/Mean_edge_length.h"
 
+#include "triangle_tree.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
@@ -267,6 +269,16 @@ std::size_t number_of_degenerate_faces(const PolygonMesh& m)
   }
   const double threshold = 1e-12 * sum / double(areas.size());
   return std::size_t(std::count_if(areas.begin(), areas.end(), [&](double a) { return a <= threshold; }));
+}
+
+// The RMS distance of the vertices of `result` to the surface of `reference`.
+inline double surface_rms(const Mesh& result, const Mesh& reference)
+{
+  Triangle_tree<K, Mesh> tree(faces(reference).first, faces(reference).second, reference);
+  double sum = 0;
+  for(auto v : vertices(result))
+    sum += tree.squared_distance(result.point(v));
+  return std::sqrt(sum / double(num_vertices(result)));
 }
 
 // The largest violation of the bound, as a user computes it: 0 or less when it holds exactly

@@ -18,6 +18,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -160,6 +162,20 @@ public:
   Ball_bound(const Points& X0, double eps) : Ball_bound(X0, Bound_sizes(eps)) {}
   Ball_bound(const Points& X0, Bound_sizes radius) : Deviation_bound_base<Ball_bound>(X0, std::move(radius)) {}
 
+  // The bound of the vertices `vertices[k]` alone, as vertex k about X0_part: its ball if
+  // moves[k] (X0_part's row then that vertex's row of the input points), else pinned at its row.
+  Ball_bound part(const Points& X0_part, const std::vector<Index>& vertices, const std::vector<bool>& moves) const
+  {
+    std::vector<double> radius(vertices.size(), 0.);
+    for(std::size_t k = 0; k < vertices.size(); ++k)
+    {
+      CGAL_precondition(!moves[k] || point(X0_part, k) == point(m_X0, vertices[k]));
+      if(moves[k])
+        radius[k] = m_size[vertices[k]];
+    }
+    return Ball_bound(X0_part, Bound_sizes(std::move(radius)));
+  }
+
   bool contains(const Points& X, std::size_t i) const { return contains_point(X.data() + 3 * i, i); }
 
   // Whether the point q lies in vertex i's set.
@@ -257,6 +273,24 @@ public:
     m_size = Bound_sizes(std::move(largest));
   }
 
+  // The bound of the vertices `vertices[k]` alone, as vertex k about X0_part: its box if
+  // moves[k], else pinned at its row of X0_part.
+  Box_bound part(const Points& X0_part, const std::vector<Index>& vertices, const std::vector<bool>& moves) const
+  {
+    Box_bound bound(X0_part);
+    std::vector<double> largest(vertices.size(), 0.);
+    for(std::size_t k = 0; k < vertices.size(); ++k)
+    {
+      const Eigen::Index j = Eigen::Index(k), i = Eigen::Index(vertices[k]);
+      bound.m_lower.row(j) = moves[k] ? m_lower.row(i) : X0_part.row(j);
+      bound.m_upper.row(j) = moves[k] ? m_upper.row(i) : X0_part.row(j);
+      if(moves[k])
+        largest[k] = m_size[vertices[k]];
+    }
+    bound.m_size = Bound_sizes(std::move(largest));
+    return bound;
+  }
+
   bool contains(const Points& X, std::size_t i) const { return contains_point(X.data() + 3 * i, i); }
 
   // Whether the point q lies in vertex i's set.
@@ -318,6 +352,10 @@ public:
   }
 
 private:
+  explicit Box_bound(const Points& X0)
+    : Deviation_bound_base<Box_bound>(X0, Bound_sizes(0)), m_lower(X0.rows(), 3), m_upper(X0.rows(), 3)
+  {}
+
   Points m_lower, m_upper; // the box, per coordinate
 };
 

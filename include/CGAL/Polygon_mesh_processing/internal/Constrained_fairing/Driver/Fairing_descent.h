@@ -54,21 +54,25 @@ public:
   void run(const Points& X0, Fairing_objective& energy, const Points& anchor, const Iteration_callback& callback,
            Points& X, Constrained_fairing_result& result) const
   {
-    result.initial_energy = result.final_energy = energy.value(X0);
-    result.initial_bending_energy = result.final_bending_energy = energy.bending_energy(X0);
-    result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
-    result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+    begin(X0, energy, result);
     X = X0;
     if(m_settings.options.max_iterations == 0)
       return;
     start(X0, energy, anchor, result.initial_energy, X);
-    solve(energy, callback, X, result);
-    if(result)
-      result.final_bending_energy = energy.bending_energy(X);
+    descend(energy, callback, slides() ? Points() : normal_directions(X), X, result);
   }
 
-private:
-  // The accurate objective's anchor is its smoothed start.
+  // The result's energies and counts at X0, before any iteration.
+  void begin(const Points& X0, Fairing_objective& energy, Constrained_fairing_result& result) const
+  {
+    result.initial_energy = result.final_energy = energy.value(X0);
+    result.initial_bending_energy = result.final_bending_energy = energy.bending_energy(X0);
+    result.number_of_degenerate_edges = energy.number_of_degenerate_hinges();
+    result.status = Constrained_fairing_status::ITERATION_LIMIT_REACHED;
+  }
+
+  // The start from X0: the accurate objective's anchor, or X0 smoothed, kept if it lowers the
+  // energy below `initial_energy`.
   void start(const Points& X0, Fairing_objective& energy, const Points& anchor, double initial_energy,
              Points& X) const
   {
@@ -82,21 +86,42 @@ private:
       X = X0;
   }
 
-  // By the method the settings name, over the bound's sets, or over the segments of the
-  // normals of X (the smoothed start) inside them (Normal_offsets.h).
-  void solve(Fairing_objective& energy, const Iteration_callback& callback, Points& X,
-             Constrained_fairing_result& result) const
+  // Whether the vertices slide in their sets, rather than move along the normals of the start.
+  bool slides() const { return m_settings.slides(std::is_same<Bound, Box_bound>::value); }
+
+  // From X by the method the settings name, over the bound's sets if the vertices slide, or else
+  // over the segments inside them of the lines through X along `normals` (Normal_offsets.h).
+  void descend(Fairing_objective& energy, const Iteration_callback& callback, const Points& normals, Points& X,
+               Constrained_fairing_result& result) const
   {
-    if(m_settings.slides(std::is_same<Bound, Box_bound>::value))
+    if(slides())
       solve_over(m_bound, energy, callback, X, result);
     else
     {
-      const Normal_offset_bound<Bound> segments(m_bound, X, normal_directions(X));
+      const Normal_offset_bound<Bound> segments(m_bound, X, normals);
       Normal_offset_objective<Fairing_objective, Bound> offsets(energy, segments);
       solve_over(segments, offsets, callback, X, result);
     }
+    if(result)
+      result.final_bending_energy = energy.bending_energy(X);
   }
 
+  // Each vertex's unit normal at X; none (it moves freely) where the input has no surface
+  // normal (a mesh's creases, a label map's junction lines), where the normal vanishes, and at
+  // the triangles folded at X, which no motion along the normals would unfold.
+  Points normal_directions(const Points& X) const
+  {
+    Points N = vertex_normals(m_mesh, X);
+    for(Index f : folded_triangles(m_mesh, X))
+      for(Index v : m_mesh.triangles[f])
+        point(N, v).setZero();
+    for(std::size_t i = 0; i < m_sliding.size(); ++i)
+      if(m_sliding[i])
+        point(N, i).setZero();
+    return N;
+  }
+
+private:
   template <typename Feasible_set, typename Objective>
   void solve_over(const Feasible_set& bound, Objective& energy, const Iteration_callback& callback, Points& X,
                   Constrained_fairing_result& result) const
@@ -123,21 +148,6 @@ private:
     result.number_of_iterations = path.iterations;
     result.number_of_cg_iterations = path.cg_iterations;
     result.number_of_energy_evaluations = path.energy_evaluations;
-  }
-
-  // Each vertex's unit normal at X; none (it moves freely) where the input has no surface
-  // normal (a mesh's creases, a label map's junction lines), where the normal vanishes, and at
-  // the triangles folded at X, which no motion along the normals would unfold.
-  Points normal_directions(const Points& X) const
-  {
-    Points N = vertex_normals(m_mesh, X);
-    for(Index f : folded_triangles(m_mesh, X))
-      for(Index v : m_mesh.triangles[f])
-        point(N, v).setZero();
-    for(std::size_t i = 0; i < m_sliding.size(); ++i)
-      if(m_sliding[i])
-        point(N, i).setZero();
-    return N;
   }
 
   const Hinge_mesh& m_mesh;

@@ -26,10 +26,10 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CROSSING_REPAIR_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Triangle_crossings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Triangle_crossings.h>
 
 #include <algorithm>
 #include <array>
@@ -44,6 +44,145 @@ namespace Constrained_fairing {
 // The halfway pulls of a point before it is pulled back all the way.
 constexpr std::size_t crossing_repair_rounds = 6;
 
+// The pulls back of repair_crossings_needles_and_folds() below, round by round.
+template <typename Bound>
+class Crossing_repair
+{
+public:
+  Crossing_repair(const Hinge_mesh& mesh, const Bound& bound, const std::vector<bool>& moving, double smallest_sine,
+                  const Points& X0, Points& X)
+    : m_mesh(mesh), m_triangles(mesh.triangles), m_bound(bound), m_moving(moving), m_smallest_sine(smallest_sine),
+      m_X0(X0), m_X(X), m_crossings(mesh.triangles), m_n(static_cast<std::size_t>(X.rows())), m_m(m_triangles.size()),
+      m_pulls(m_n, 0), m_known(m_m, false), m_inherited(m_m, false), m_needle(m_m), m_start_sine(m_m, 0.),
+      m_folded_at_start(m_m, false), m_fold(m_m, false)
+  {}
+
+  // The number of points pulled.
+  std::size_t run()
+  {
+    // Where no point moved (no iteration), no triangle can cross that did not at the start: the
+    // search over the whole soup would take seconds on a large map to find nothing to pull.
+    bool any_moved = false;
+    for(std::size_t v = 0; v < m_n && !any_moved; ++v)
+      any_moved = point(m_X, v) != point(m_X0, v);
+    if(!any_moved)
+      return 0;
+    m_crossing = m_crossings.find(m_X, {});
+    if(m_smallest_sine > 0)
+      for(std::size_t f = 0; f < m_m; ++f)
+        m_start_sine[f] = smallest_angle_sine(m_X0, m_triangles[f]);
+    for(std::size_t f = 0; f < m_m; ++f)
+      m_needle[f] = is_needle(f);
+    if(m_smallest_sine > 0)
+      for(Index f : folded_triangles(m_mesh, m_X0))
+        m_folded_at_start[f] = true;
+    find_folds();
+    for(;;)
+    {
+      mark_inherited();
+      std::vector<bool> moved(m_n, false);
+      if(!select(moved))
+        return m_pulled;
+      pull_back(moved);
+    }
+  }
+
+private:
+  // A triangle back at its start is never a needle, whatever the rounding of its sine.
+  bool is_needle(std::size_t f) const
+  {
+    const auto& t = m_triangles[f];
+    if(!(m_smallest_sine > 0))
+      return false;
+    if(point(m_X, t[0]) == point(m_X0, t[0]) && point(m_X, t[1]) == point(m_X0, t[1]) &&
+       point(m_X, t[2]) == point(m_X0, t[2]))
+      return false;
+    const double sine = smallest_angle_sine(m_X, t);
+    return sine < m_smallest_sine && sine < m_start_sine[f];
+  }
+
+  void find_folds()
+  {
+    std::fill(m_fold.begin(), m_fold.end(), false);
+    if(m_smallest_sine > 0)
+      for(Index f : folded_triangles(m_mesh, m_X))
+        m_fold[f] = !m_folded_at_start[f];
+  }
+
+  // Which of the crossing triangles crossed at the start already: pulling them back cannot help.
+  void mark_inherited()
+  {
+    std::vector<bool> unknown(m_m, false);
+    bool any = false;
+    for(std::size_t f = 0; f < m_m; ++f)
+      if(m_crossing[f] && !m_known[f])
+        unknown[f] = m_known[f] = any = true;
+    if(!any)
+      return;
+    const std::vector<bool> at_start = m_crossings.find(m_X0, unknown);
+    for(std::size_t f = 0; f < m_m; ++f)
+      m_inherited[f] = m_inherited[f] || (unknown[f] && at_start[f]);
+  }
+
+  // The points of this round's pulls: those of the new crossings, the needles and the folds with
+  // their neighbours; false if there are none.
+  bool select(std::vector<bool>& moved) const
+  {
+    bool any = false;
+    const auto pull = [&](std::size_t f) {
+      for(Index v : m_triangles[f])
+        if(m_moving[v] && m_pulls[v] <= crossing_repair_rounds && !moved[v])
+          moved[v] = any = true;
+    };
+    for(std::size_t f = 0; f < m_m; ++f)
+      if((m_crossing[f] && !m_inherited[f]) || m_needle[f])
+        pull(f);
+    for(const Hinge& h : m_mesh.hinges)
+      if(m_fold[h.f[0]] || m_fold[h.f[1]])
+        pull(h.f[0]), pull(h.f[1]);
+    return any;
+  }
+
+  // Halfway back at each of a point's first pulls, all the way at the last; then what changed.
+  void pull_back(const std::vector<bool>& moved)
+  {
+    std::vector<bool> changed(m_m, false);
+    for(std::size_t f = 0; f < m_m; ++f)
+      changed[f] = moved[m_triangles[f][0]] || moved[m_triangles[f][1]] || moved[m_triangles[f][2]];
+    for(std::size_t v = 0; v < m_n; ++v)
+      if(moved[v])
+      {
+        m_pulled += m_pulls[v] == 0;
+        ++m_pulls[v];
+        const double keep = m_pulls[v] > crossing_repair_rounds ? 0 : 0.5;
+        point(m_X, v) = point(m_X0, v) + keep * (point(m_X, v) - point(m_X0, v));
+        m_bound.project(m_X, v);
+      }
+    for(std::size_t f = 0; f < m_m; ++f)
+      m_needle[f] = changed[f] && is_needle(f);
+    find_folds();
+    // A triangle crosses now only if it crossed before or one of its points moved.
+    for(std::size_t f = 0; f < m_m; ++f)
+      changed[f] = changed[f] || m_crossing[f];
+    m_crossing = m_crossings.find(m_X, changed);
+  }
+
+  const Hinge_mesh& m_mesh;
+  const std::vector<std::array<Index, 3> >& m_triangles;
+  const Bound& m_bound;
+  const std::vector<bool>& m_moving;
+  const double m_smallest_sine;
+  const Points& m_X0;
+  Points& m_X;
+  const Triangle_crossings m_crossings;
+  const std::size_t m_n, m_m;
+  std::vector<std::size_t> m_pulls; // per point
+  std::size_t m_pulled = 0;
+  std::vector<bool> m_crossing, m_known, m_inherited, m_needle; // per triangle
+  std::vector<double> m_start_sine;
+  std::vector<bool> m_folded_at_start, m_fold;
+};
+
 // Pulls back towards X0, until none is left, the points of the triangles of `mesh` that cross in X
 // where they did not cross in X0; where `smallest_sine` > 0, also those of the needles, whose
 // smallest angle's sine (smallest_angle_sine()) is under both `smallest_sine` and its sine in X0,
@@ -54,96 +193,7 @@ std::size_t repair_crossings_needles_and_folds(const Hinge_mesh& mesh, const Bou
                                                const std::vector<bool>& moving, double smallest_sine,
                                                const Points& X0, Points& X)
 {
-  const std::vector<std::array<Index, 3> >& triangles = mesh.triangles;
-  const Triangle_crossings crossings(triangles);
-  const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
-  // Where no point moved (no iteration), no triangle can cross that did not at the start: the
-  // search over the whole soup would take seconds on a large map to find nothing to pull.
-  bool any_moved = false;
-  for(std::size_t v = 0; v < n && !any_moved; ++v)
-    any_moved = point(X, v) != point(X0, v);
-  if(!any_moved)
-    return 0;
-  std::vector<std::size_t> pulls(n, 0);
-  std::size_t pulled = 0;
-  std::vector<bool> crossing = crossings.find(X, {}), known(m, false), inherited(m, false), needle(m);
-  std::vector<double> start_sine(m, 0.);
-  if(smallest_sine > 0)
-    for(std::size_t f = 0; f < m; ++f)
-      start_sine[f] = smallest_angle_sine(X0, triangles[f]);
-  // A triangle back at its start is never a needle, whatever the rounding of its sine.
-  const auto is_needle = [&](std::size_t f) {
-    const auto& t = triangles[f];
-    if(!(smallest_sine > 0))
-      return false;
-    if(point(X, t[0]) == point(X0, t[0]) && point(X, t[1]) == point(X0, t[1]) && point(X, t[2]) == point(X0, t[2]))
-      return false;
-    const double sine = smallest_angle_sine(X, t);
-    return sine < smallest_sine && sine < start_sine[f];
-  };
-  for(std::size_t f = 0; f < m; ++f)
-    needle[f] = is_needle(f);
-  std::vector<bool> folded_at_start(m, false), fold(m, false);
-  const auto find_folds = [&]() {
-    std::fill(fold.begin(), fold.end(), false);
-    if(smallest_sine > 0)
-      for(Index f : folded_triangles(mesh, X))
-        fold[f] = !folded_at_start[f];
-  };
-  if(smallest_sine > 0)
-    for(Index f : folded_triangles(mesh, X0))
-      folded_at_start[f] = true;
-  find_folds();
-  const auto pullable = [&](Index v) { return moving[v] && pulls[v] <= crossing_repair_rounds; };
-  for(;;)
-  {
-    // Which of the crossing triangles crossed at the start already: pulling them back cannot help.
-    std::vector<bool> unknown(m, false);
-    bool any = false;
-    for(std::size_t f = 0; f < m; ++f)
-      if(crossing[f] && !known[f])
-        unknown[f] = known[f] = any = true;
-    if(any)
-    {
-      const std::vector<bool> at_start = crossings.find(X0, unknown);
-      for(std::size_t f = 0; f < m; ++f)
-        inherited[f] = inherited[f] || (unknown[f] && at_start[f]);
-    }
-    std::vector<bool> moved(n, false);
-    any = false;
-    const auto pull = [&](std::size_t f) {
-      for(Index v : triangles[f])
-        if(pullable(v) && !moved[v])
-          moved[v] = any = true;
-    };
-    for(std::size_t f = 0; f < m; ++f)
-      if((crossing[f] && !inherited[f]) || needle[f])
-        pull(f);
-    for(const Hinge& h : mesh.hinges)
-      if(fold[h.f[0]] || fold[h.f[1]])
-        pull(h.f[0]), pull(h.f[1]);
-    if(!any)
-      return pulled;
-    std::vector<bool> changed(m, false);
-    for(std::size_t f = 0; f < m; ++f)
-      changed[f] = moved[triangles[f][0]] || moved[triangles[f][1]] || moved[triangles[f][2]];
-    for(std::size_t v = 0; v < n; ++v)
-      if(moved[v])
-      {
-        pulled += pulls[v] == 0;
-        ++pulls[v];
-        const double keep = pulls[v] > crossing_repair_rounds ? 0 : 0.5;
-        point(X, v) = point(X0, v) + keep * (point(X, v) - point(X0, v));
-        bound.project(X, v);
-      }
-    for(std::size_t f = 0; f < m; ++f)
-      needle[f] = changed[f] && is_needle(f);
-    find_folds();
-    // A triangle crosses now only if it crossed before or one of its points moved.
-    for(std::size_t f = 0; f < m; ++f)
-      changed[f] = changed[f] || crossing[f];
-    crossing = crossings.find(X, changed);
-  }
+  return Crossing_repair<Bound>(mesh, bound, moving, smallest_sine, X0, X).run();
 }
 
 } // namespace Constrained_fairing

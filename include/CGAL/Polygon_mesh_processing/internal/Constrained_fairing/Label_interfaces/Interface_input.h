@@ -1,8 +1,9 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A multi-label surface as the driver (Fairing_driver.h) fairs it: a soup of points, triangles
-// and the two labels of each triangle. What differs from a mesh:
+// A multi-label surface as the driver (Fairing_driver.h) fairs it, a model of its Input concept
+// (Fairing_input.h): a soup of points, triangles and the two labels of each triangle. What
+// differs from a mesh:
 //  - its structure is checked by Interface_check.h, and its junction lines (Junction_lines.h)
 //    fix their ends and branches;
 //  - its triangles are oriented from their smaller label into their larger, and its hinges are
@@ -18,20 +19,20 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Crossing_repair.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_part.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Junction_lines.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Crossing_repair.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_type_config.h>
@@ -155,8 +156,8 @@ public:
     for(std::size_t f = 0; f < sides.size(); ++f)
       mesh_sides[mesh.positions_of_list[f]] = sides[f];
     m_volumes.emplace(mesh.triangles, mesh_sides, X0, settings.label_volume_weight);
-    objective.add_curve_bending(*m_curves);
-    objective.add_label_volumes(*m_volumes);
+    objective.add_term(*m_curves);
+    objective.add_term(*m_volumes);
     // Without the barrier against slivers, the user asked for the energy without barriers.
     if(settings.sliver_barrier_weight > 0)
       objective.add_fold_barrier(Fold_barrier(interface_fold_weight, interface_fold_angle));
@@ -182,6 +183,8 @@ public:
   template <typename VertexMaps>
   void clear_outputs(const VertexMaps&) const
   {}
+
+  void write_own_outputs() const {}
 
   void write(std::size_t k, double x, double y, double z) { m_points[k] = Point(x, y, z); }
 

@@ -47,6 +47,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Objective_terms.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
@@ -66,7 +67,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-class Label_volumes
+class Label_volumes final : public Triangle_term
 {
 public:
   // `triangles[f]` runs out of the region of the label numbered `sides[f][0]` into that of
@@ -143,7 +144,7 @@ public:
   std::size_t number_of_triangles() const { return m_sides.size(); }
   double slack(std::size_t l) const { return m_slack[l]; }
 
-  double value(const Points& X)
+  double value(const Points& X) override
   {
     volumes(X, m_volumes);
     double sum = 0;
@@ -153,9 +154,9 @@ public:
   }
 
   // Adds the gradient to G (the term on its own; the objective adds it triangle by triangle).
-  double add_gradient(const Points& X, Points& G, Stiffness_and_reach*)
+  double add_gradient(const Points& X, Points& G, Stiffness_and_reach*) override
   {
-    const double energy = update_pulls(X);
+    const double energy = prepare_gradient(X);
     if(m_targets.empty())
       return energy; // no closed label: the term is zero
     Points G_scaled = Points::Zero(X.rows(), 3);
@@ -168,7 +169,7 @@ public:
 
   // The term at X, and each label's pull on its points, which the triangles' gradients below
   // use until the next call.
-  double update_pulls(const Points& X)
+  double prepare_gradient(const Points& X) override
   {
     const double energy = value(X);
     for(std::size_t l = 0; l < m_targets.size(); ++l)
@@ -182,7 +183,7 @@ public:
   // its corner k moves. The stiffness is left as the bending energy sets it: the term acts on
   // each label as a whole, a direction that the quasi-Newton memory learns.
   void add_gradient(Index f, const std::array<Index, 3>& v, const std::array<Eigen::Vector3d, 3>& p,
-                    unsigned corners, Points& G) const
+                    unsigned corners, Points& G) const override
   {
     add_gradient(m_sides[f], v, p, corners, G);
   }
@@ -232,7 +233,59 @@ private:
         if(X0(t.v[0], a) == X0(t.v[1], a) && X0(t.v[0], a) == X0(t.v[2], a))
           axis[f] = a;
     }
-    // the spacing along each axis: the median length of the input's edges along it
+    const std::array<double, 3> h = axis_spacings(X0);
+    const Plane_edges edges = plane_edges(X0, axis);
+    Plateaus plateaus(m);
+    for(std::size_t i = 0; i + 1 < edges.size(); ++i)
+      if(is_shared(edges, i))
+      {
+        const std::size_t f = std::get<2>(edges[i]), g = std::get<2>(edges[i + 1]);
+        if(axis[f] == axis[g] && X0(m_triangles[f].v[0], axis[f]) == X0(m_triangles[g].v[0], axis[g]) &&
+           m_triangles[f].sides == m_triangles[g].sides)
+          plateaus.join(f, g);
+      }
+    std::vector<double> up(m, 0.), around(m, 0.);
+    count_steps(X0, axis, edges, plateaus, up, around);
+    std::vector<double> plateau(m, 0.);
+    for(std::size_t f = 0; f < m; ++f)
+      if(axis[f] >= 0)
+        plateau[plateaus.find(f)] += area[f] * h[std::size_t(axis[f])] / std::sqrt(12.);
+    for(std::size_t f = 0; f < m; ++f)
+      if(axis[f] >= 0 && plateaus.find(f) == f)
+        plateau[f] *= around[f] > 0 ? std::abs(up[f]) / around[f] : 1;
+    std::vector<double> variance(L, 0.);
+    for(std::size_t f = 0; f < m; ++f)
+      if(axis[f] >= 0 && plateaus.find(f) == f)
+        for(Index s : m_triangles[f].sides)
+          if(s != none)
+            variance[s] += plateau[f] * plateau[f];
+    std::vector<double> slack(L);
+    for(std::size_t l = 0; l < L; ++l)
+      slack[l] = std::sqrt(variance[l]);
+    return slack;
+  }
+
+  // The plateaus as a union-find of triangles.
+  struct Plateaus
+  {
+    explicit Plateaus(std::size_t m) : parent(m)
+    {
+      for(std::size_t f = 0; f < m; ++f)
+        parent[f] = f;
+    }
+    std::size_t find(std::size_t f)
+    {
+      while(parent[f] != f)
+        f = parent[f] = parent[parent[f]];
+      return f;
+    }
+    void join(std::size_t f, std::size_t g) { parent[find(f)] = find(g); }
+    std::vector<std::size_t> parent;
+  };
+
+  // The spacing along each axis: the median length of the input's edges along it.
+  std::array<double, 3> axis_spacings(const Points& X0) const
+  {
     std::array<std::vector<double>, 3> lengths;
     for(const Triangle& t : m_triangles)
       for(std::size_t k = 0; k < 3; ++k)
@@ -250,17 +303,15 @@ private:
         std::nth_element(lengths[a].begin(), middle, lengths[a].end());
         h[a] = *middle;
       }
-    // plateaus: union of edge-adjacent triangles of one axis and plane
-    std::vector<std::size_t> parent(m);
-    for(std::size_t f = 0; f < m; ++f)
-      parent[f] = f;
-    const auto find = [&parent](std::size_t f) {
-      while(parent[f] != f)
-        f = parent[f] = parent[parent[f]];
-      return f;
-    };
-    std::vector<std::tuple<Index, Index, std::size_t> > edges;
-    for(std::size_t f = 0; f < m; ++f)
+    return h;
+  }
+
+  // The edges of the triangles in a grid plane, {a, b, triangle} with a < b, sorted.
+  using Plane_edges = std::vector<std::tuple<Index, Index, std::size_t> >;
+  Plane_edges plane_edges(const Points& X0, const std::vector<int>& axis) const
+  {
+    Plane_edges edges;
+    for(std::size_t f = 0; f < m_triangles.size(); ++f)
       if(axis[f] >= 0)
         for(std::size_t k = 0; k < 3; ++k)
         {
@@ -269,47 +320,32 @@ private:
         }
     sort_by_vertex(edges, std::size_t(X0.rows()), [](const auto& e) { return std::get<0>(e); },
                    [](const auto& a, const auto& b) { return a < b; });
+    return edges;
+  }
+
+  static bool is_shared(const Plane_edges& edges, std::size_t i)
+  {
+    return std::get<0>(edges[i]) == std::get<0>(edges[i + 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i + 1]);
+  }
+
+  // The steps around each plateau: up (+1) or down (-1) along its axis, across its edges.
+  void count_steps(const Points& X0, const std::vector<int>& axis, const Plane_edges& edges, Plateaus& plateaus,
+                   std::vector<double>& up, std::vector<double>& around) const
+  {
     for(std::size_t i = 0; i + 1 < edges.size(); ++i)
-      if(std::get<0>(edges[i]) == std::get<0>(edges[i + 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i + 1]))
-      {
-        const std::size_t f = std::get<2>(edges[i]), g = std::get<2>(edges[i + 1]);
-        if(axis[f] == axis[g] && X0(m_triangles[f].v[0], axis[f]) == X0(m_triangles[g].v[0], axis[g]) &&
-           m_triangles[f].sides == m_triangles[g].sides)
-          parent[find(f)] = find(g);
-      }
-    // the steps around each plateau: up (+1) or down (-1) along its axis
-    std::vector<double> up(m, 0.), around(m, 0.);
-    for(std::size_t i = 0; i + 1 < edges.size(); ++i)
-      if(std::get<0>(edges[i]) == std::get<0>(edges[i + 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i + 1]))
+      if(is_shared(edges, i))
         for(int swap = 0; swap < 2; ++swap)
         {
           const std::size_t f = std::get<2>(edges[i + std::size_t(swap)]);
           const std::size_t g = std::get<2>(edges[i + 1 - std::size_t(swap)]);
-          if(find(f) == find(g))
+          if(plateaus.find(f) == plateaus.find(g))
             continue;
           const int a = axis[f];
           const double plane = X0(m_triangles[f].v[0], a);
           const double c = (X0(m_triangles[g].v[0], a) + X0(m_triangles[g].v[1], a) + X0(m_triangles[g].v[2], a)) / 3;
-          up[find(f)] += c > plane ? 1 : c < plane ? -1 : 0;
-          around[find(f)] += 1;
+          up[plateaus.find(f)] += c > plane ? 1 : c < plane ? -1 : 0;
+          around[plateaus.find(f)] += 1;
         }
-    std::vector<double> plateau(m, 0.);
-    for(std::size_t f = 0; f < m; ++f)
-      if(axis[f] >= 0)
-        plateau[find(f)] += area[f] * h[std::size_t(axis[f])] / std::sqrt(12.);
-    for(std::size_t f = 0; f < m; ++f)
-      if(axis[f] >= 0 && find(f) == f)
-        plateau[f] *= around[f] > 0 ? std::abs(up[f]) / around[f] : 1;
-    std::vector<double> variance(L, 0.);
-    for(std::size_t f = 0; f < m; ++f)
-      if(axis[f] >= 0 && find(f) == f)
-        for(Index s : m_triangles[f].sides)
-          if(s != none)
-            variance[s] += plateau[f] * plateau[f];
-    std::vector<double> slack(L);
-    for(std::size_t l = 0; l < L; ++l)
-      slack[l] = std::sqrt(variance[l]);
-    return slack;
   }
 
   struct Triangle

@@ -21,6 +21,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_CURVE_BENDING_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Objective_terms.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
 
 #include <array>
@@ -32,7 +33,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-class Curve_bending
+class Curve_bending final : public Objective_term
 {
 public:
   // `points[k]` = {p, i, n}: inner point i of a line and its neighbours, in the solver's order;
@@ -51,7 +52,7 @@ public:
 
   std::size_t size() const { return m_points.size(); }
 
-  double value(const Points& X) const
+  double value(const Points& X) override
   {
     double sum = 0;
     for(std::size_t k = 0; k < m_points.size(); ++k)
@@ -61,7 +62,7 @@ public:
 
   // Adds the gradient to G and the Gauss-Newton diagonal to the stiffness (the term is
   // quadratic: 2 c per neighbour, 8 c for the inner point, in every direction); returns the value.
-  double add_gradient(const Points& X, Points& G, Stiffness_and_reach* scales) const
+  double add_gradient(const Points& X, Points& G, Stiffness_and_reach* scales) override
   {
     double sum = 0;
     for(std::size_t k = 0; k < m_points.size(); ++k)

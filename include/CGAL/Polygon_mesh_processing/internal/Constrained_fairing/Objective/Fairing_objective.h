@@ -1,25 +1,14 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The function the solvers minimize: the bending energy (Bending_energy.h), plus the barrier
-// against slivers (Sliver_barrier.h), plus, on a multi-label surface, the barrier against folds
-// (Fold_barrier.h), plus the bending of the curves the energy's hinges do not
-// cross (Curve_bending.h: a mesh's creases, a multi-label surface's junction lines), plus, on a
-// multi-label surface, its labels' volumes (Label_volumes.h), plus, for the
-// accurate objective, a fidelity term that keeps the surface near an anchor a_i:
-//
-//   F = mu / n * sum_i |x_i - a_i|^2 / t_i^2,
-//
-// over the n vertices of nonzero tolerance t_i. F is dimensionless like the bending energy,
-// and is mu when every vertex is its tolerance away from its anchor. Why: the bending energy is
-// scale-invariant and does not care where in its band the surface sits, so its minimum
-// flattens real detail up to the bound. The anchor is a denoised copy of the input (the
-// caller's choice; the driver, Fairing_driver.h, makes it with Fidelity_anchor.h), which keeps
-// the detail larger than the noise, while the bending energy removes what the filter leaves.
-// Every vertex counts alike, as in the bending energy, whose terms are per hinge, and as in
-// the noise of a scan, which is per point: weighted by vertex areas, the term held the vertices
-// of small triangles too loosely, and their normals ended worse than those of a bounded Taubin
-// smoothing (see benchmark/fairing_accuracy).
+// The function the solvers minimize: the bending energy of the hinges (Bending_energy.h) with
+// the barrier against slivers (Sliver_barrier.h) and, if given, against folds (Fold_barrier.h),
+// for an input with triangles; plus the terms the input and the driver give, in that order
+// (Objective_terms.h): a mesh's creases, a multi-label surface's junction lines and volumes, the
+// accurate objective's fidelity; an input without hinges gives its bending as a term
+// (Operator_bending.h). The sum is taken in the same order by value() and value_and_gradient(),
+// but for the terms over triangles: their values come first in value_and_gradient(), which
+// makes their gradients ready before the bending energy's tiles add them.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FAIRING_OBJECTIVE_H
@@ -27,17 +16,17 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Bending_energy.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Curve_bending.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fold_barrier.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Label_volumes.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Objective_terms.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Sliver_barrier.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Stiffness_and_reach.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <CGAL/assertions.h>
 
 #include <array>
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -48,124 +37,124 @@ namespace Constrained_fairing {
 class Fairing_objective
 {
 public:
-  // `sliver_weight`: the weight of the barrier against slivers, 0 for none; `sliver_threshold`
-  // the quality under which a triangle is a sliver.
+  // The hinges' bending energy and the barrier against slivers: `sliver_weight` its weight, 0
+  // for none; `sliver_threshold` the quality under which a triangle is a sliver.
   Fairing_objective(const Hinge_mesh& mesh, const Points& X0, double sliver_weight, double sliver_threshold)
-    : m_mesh(mesh), m_bending(mesh, X0), m_barrier(mesh, X0, sliver_weight, sliver_threshold)
+    : m_hinges(std::in_place, mesh, X0, sliver_weight, sliver_threshold)
+  {}
+
+  // No hinges: the terms alone, one of which is the bending energy.
+  Fairing_objective() = default;
+
+  // Adds a term (kept by reference) after those already given.
+  void add_term(Objective_term& term) { m_terms.push_back({&term, nullptr}); }
+  void add_term(Triangle_term& term)
   {
+    CGAL_precondition(m_hinges.has_value());
+    m_terms.push_back({&term, &term});
+    m_triangle_terms.push_back(&term);
   }
 
-  // Adds the fidelity term of weight mu towards `anchor` (kept by reference); `tolerance(i)`
-  // is vertex i's tolerance (no term for a vertex of tolerance 0, which does not move).
-  template <typename Tolerance>
-  void add_fidelity(double mu, const Tolerance& tolerance, const Points& anchor)
+  // Adds the barrier against folds of the hinges.
+  void add_fold_barrier(const Fold_barrier& folds)
   {
-    m_anchor = &anchor;
-    const std::size_t n = m_mesh.number_of_vertices;
-    std::size_t moving = 0;
-    for(std::size_t i = 0; i < n; ++i)
-      if(tolerance(i) > 0)
-        ++moving;
-    m_weight.assign(n, 0.);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const double t = tolerance(i);
-      if(t > 0)
-        m_weight[i] = mu / (double(moving) * t * t);
-    }
+    CGAL_precondition(m_hinges.has_value());
+    m_hinges->folds = folds;
   }
 
-  // Adds the bending of the creases or junction lines (kept by reference).
-  void add_curve_bending(const Curve_bending& curves) { m_curves = &curves; }
-
-  // Adds the volumes of the labels of a multi-label surface (kept by reference), whose triangles
-  // are the mesh's, in its order.
-  void add_label_volumes(Label_volumes& volumes)
+  std::size_t number_of_degenerate_hinges() const
   {
-    CGAL_precondition(volumes.number_of_triangles() == m_mesh.triangles.size());
-    m_volumes = &volumes;
+    return m_hinges ? m_hinges->bending.number_of_degenerate_hinges() : 0;
   }
 
-  // Adds the barrier against folds.
-  void add_fold_barrier(const Fold_barrier& folds) { m_folds = folds; }
-
-  std::size_t number_of_degenerate_hinges() const { return m_bending.number_of_degenerate_hinges(); }
-
-  double bending_energy(const Points& X) { return m_bending.value(X); }
+  // The input's bending energy alone, the paper's measure of fairness.
+  double bending_energy(const Points& X)
+  {
+    double sum = m_hinges ? m_hinges->bending.value(X) : 0;
+    for(const Term& t : m_terms)
+      if(t.term->is_bending())
+        sum += t.term->value(X);
+    return sum;
+  }
 
   double value(const Points& X)
   {
-    double sum = m_bending.value(X, Triangle_terms{m_barrier, nullptr}, m_folds);
-    if(m_curves)
-      sum += m_curves->value(X);
-    if(m_volumes)
-      sum += m_volumes->value(X);
-    return sum + fidelity(X);
+    double sum = m_hinges ? m_hinges->bending.value(X, In_tiles{m_hinges->barrier, m_triangle_terms}, m_hinges->folds)
+                          : 0;
+    for(const Term& t : m_terms)
+      sum += t.term->value(X);
+    return sum;
   }
 
-  // As Bending_energy::value_and_gradient(); the fidelity term adds 2 w_i (x_i - x0_i) to the
-  // gradient and 2 w_i to the stiffness, in every direction.
+  // As Bending_energy::value_and_gradient(), with each term's gradient and stiffness added.
   double value_and_gradient(const Points& X, Points& G, Stiffness_and_reach* scales = nullptr)
   {
-    double sum = m_volumes ? m_volumes->update_pulls(X) : 0;
-    sum += m_bending.value_and_gradient(X, G, scales, Triangle_terms{m_barrier, m_volumes}, m_folds);
-    if(m_curves)
-      sum += m_curves->add_gradient(X, G, scales);
-    if(m_weight.empty())
-      return sum;
-    parallel_for_blocks(m_weight.size(), [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t i = begin; i < end; ++i)
-      {
-        const double k = 2 * m_weight[i];
-        point(G, i) += k * (point(X, i) - point(*m_anchor, i));
-        if(scales)
-          scales->stiffness[static_cast<Eigen::Index>(i)] += k;
-      }
-    });
-    return sum + fidelity(X);
+    double sum = 0;
+    for(Triangle_term* t : m_triangle_terms)
+      sum += t->prepare_gradient(X);
+    if(m_hinges)
+      sum += m_hinges->bending.value_and_gradient(X, G, scales, In_tiles{m_hinges->barrier, m_triangle_terms},
+                                                  m_hinges->folds);
+    else
+      without_hinges(X, G, scales);
+    for(const Term& t : m_terms)
+      if(!t.triangle)
+        sum += t.term->add_gradient(X, G, scales);
+    return sum;
   }
 
 private:
+  struct Term
+  {
+    Objective_term* term;
+    Triangle_term* triangle; // the same term if it is over triangles, else null
+  };
+
   // The terms evaluated in the bending energy's tiles (Bending_energy.h): the barrier's, and the
-  // volumes' gradient at the pulls of their last update.
-  struct Triangle_terms
+  // gradients of the terms over triangles, made ready by their prepare_gradient().
+  struct In_tiles
   {
     static constexpr bool active = true;
     const Sliver_barrier& barrier;
-    const Label_volumes* volumes;
+    const std::vector<Triangle_term*>& terms;
 
     double value(Index f, const std::array<Eigen::Vector3d, 3>& p) const { return barrier.value(f, p); }
 
     double add_gradient(Index f, const std::array<Index, 3>& v, const std::array<Eigen::Vector3d, 3>& p,
                         unsigned corners, Points& G, Stiffness_and_reach* scales) const
     {
-      if(volumes)
-        volumes->add_gradient(f, v, p, corners, G);
+      for(const Triangle_term* t : terms)
+        t->add_gradient(f, v, p, corners, G);
       return barrier.add_gradient(f, v, p, corners, G, scales);
     }
   };
 
-  double fidelity(const Points& X)
+  struct Hinge_terms
   {
-    if(m_weight.empty())
-      return 0;
-    return parallel_sum(m_weight.size(), m_partial, [&](std::size_t begin, std::size_t end) {
-      double sum = 0;
-      for(std::size_t i = begin; i < end; ++i)
-        sum += m_weight[i] * (point(X, i) - point(*m_anchor, i)).squaredNorm();
-      return sum;
-    });
+    Hinge_terms(const Hinge_mesh& mesh, const Points& X0, double sliver_weight, double sliver_threshold)
+      : bending(mesh, X0), barrier(mesh, X0, sliver_weight, sliver_threshold)
+    {}
+
+    Bending_energy bending;
+    Sliver_barrier barrier;
+    Fold_barrier folds; // none unless given
+  };
+
+  // What the hinges' energy sets before the terms add to it: a zero gradient, no stiffness,
+  // and no triangle to flip.
+  static void without_hinges(const Points& X, Points& G, Stiffness_and_reach* scales)
+  {
+    G = Points::Zero(X.rows(), 3);
+    if(scales)
+    {
+      scales->stiffness = Eigen::VectorXd::Zero(X.rows());
+      scales->reach = Eigen::VectorXd::Constant(X.rows(), std::numeric_limits<double>::infinity());
+    }
   }
 
-  const Hinge_mesh& m_mesh;
-  const Points* m_anchor = nullptr;
-  const Curve_bending* m_curves = nullptr;
-  Label_volumes* m_volumes = nullptr;
-  Bending_energy m_bending;
-  Sliver_barrier m_barrier;
-  Fold_barrier m_folds; // none but on a multi-label surface
-  std::vector<double> m_weight; // empty without the fidelity term
-  std::vector<double> m_partial;
+  std::optional<Hinge_terms> m_hinges; // none for an input without hinges
+  std::vector<Term> m_terms;
+  std::vector<Triangle_term*> m_triangle_terms;
 };
 
 } // namespace Constrained_fairing

@@ -1,20 +1,18 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A triangle mesh as the driver (Fairing_driver.h) fairs it: the whole mesh, or the part that a
-// face range moves (Mesh_part.h). Its vertices are named in messages by their position in
-// vertices(tmesh); its hinges are its interior edges but its creases (Feature_edges.h: those the
-// user marks and those detected), whose curves are faired as curves (Curve_bending.h) and whose
-// points, which have no surface normal, slide; it has no repair.
+// A triangle mesh as the driver (Fairing_driver.h) fairs it, a model of its Input concept
+// (Fairing_input.h): the whole mesh, or the part that a face range moves (Mesh_part.h). Its
+// vertices are named in messages by their position in vertices(tmesh); its hinges are its
+// interior edges but its creases (Feature_edges.h: those the user marks and those detected),
+// whose curves are faired as curves (Curve_bending.h) and whose points, which have no surface
+// normal, slide; it has no repair.
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_part.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Feature_edges.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Curve_network.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
@@ -22,6 +20,9 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Objective/Fairing_objective.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Vertex_maps.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Feature_edges.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_check.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_part.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -159,7 +160,7 @@ public:
     if(m_creases.inner.empty())
       return;
     m_curves.emplace(m_creases.inner, X0, settings.curve_weight);
-    objective.add_curve_bending(*m_curves);
+    objective.add_term(*m_curves);
   }
 
   template <typename Bound>
@@ -167,17 +168,10 @@ public:
               const Fairing_settings&, Constrained_fairing_result&) const
   {}
 
-  // The detected creases are marked in the user's map of feature edges, if it is writable. With a face range, the
-  // output maps read 0 and false outside the part.
+  // With a face range, the output maps read 0 and false outside the part.
   template <typename VertexMaps>
   void clear_outputs(const VertexMaps& maps) const
   {
-    if constexpr(is_writable_map<FeatureEdgeMap>)
-      if(!m_detected_edges.empty())
-        for_each_edge_of_part([&](auto e, Index a, Index b) {
-          if(std::binary_search(m_detected_edges.begin(), m_detected_edges.end(), sorted_edge(a, b)))
-            put(m_feature_edge_map, e, true);
-        });
     if(!m_region)
       return;
     for(auto v : vertices(m_tmesh))
@@ -187,6 +181,17 @@ public:
       if constexpr(VertexMaps::has_at_bound)
         put(maps.at_bound, v, false);
     }
+  }
+
+  // The detected creases are marked in the user's map of feature edges, if it is writable.
+  void write_own_outputs() const
+  {
+    if constexpr(is_writable_map<FeatureEdgeMap>)
+      if(!m_detected_edges.empty())
+        for_each_edge_of_part([&](auto e, Index a, Index b) {
+          if(std::binary_search(m_detected_edges.begin(), m_detected_edges.end(), sorted_edge(a, b)))
+            put(m_feature_edge_map, e, true);
+        });
   }
 
   void write(vertex_descriptor v, double x, double y, double z) { put(m_vpm, v, Point_3(x, y, z)); }
