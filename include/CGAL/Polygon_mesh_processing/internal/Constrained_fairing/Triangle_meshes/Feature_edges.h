@@ -21,6 +21,7 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
@@ -41,15 +42,16 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
+// The normal filter's steps (its Gaussian's width is the filter's, Normal_filter.h), the
+// shortest spur and the jump (top of this file).
 struct Feature_detection
 {
   static constexpr std::size_t filter_steps = 10;
-  static constexpr double normal_difference_sigma = 0.4;
   static constexpr std::size_t shortest_spur = 8;
   static constexpr double jump_ratio = 1.5;
-  // Taubin steps (Smoothed_start.h) before the jogs are judged, as many as the accurate
-  // objective's anchor takes (Fidelity_anchor.h)
-  static constexpr std::size_t jog_smoothing_steps = 10;
+  // Taubin steps (Smoothed_start.h) before the jogs are judged: the accurate objective's
+  // anchor's, which the jogs' sweep from 0 to 40 steps kept
+  static constexpr std::size_t jog_smoothing_steps = Fidelity_anchor::anchor_taubin_steps;
 };
 
 // A bound that holds every point: Taubin steps in free space.
@@ -149,7 +151,7 @@ inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh&
 {
   Normal_filter filter(mesh);
   filter.set_points(X);
-  filter.filter(Feature_detection::filter_steps, Feature_detection::normal_difference_sigma);
+  filter.filter(Feature_detection::filter_steps);
   // Each hinge's angle between the filtered normals, and each face's hinges.
   constexpr Index no_hinge = ~Index(0);
   std::vector<double> angle(mesh.hinges.size());
