@@ -158,6 +158,21 @@ int main()
   CHECK(states(manual, "smallest angle is under both " + repair_angle + " degrees and its own at the start"));
   CHECK(states(manual, "the repair after the descent takes over at " + repair_angle + " degrees"));
 
+  // The named parameters that constrained_fairing_of_interfaces() reads (read_named_parameters.h),
+  // each in its reference's list: the table's, feature_angle rejected, and the others.
+  const std::size_t np_from = interfaces.find("\\param np "), np_to = interfaces.find("\\return", np_from);
+  CHECK(np_from != std::string::npos && np_to != std::string::npos);
+  const std::string soup_parameters = interfaces.substr(np_from, np_to - np_from);
+  CF::for_each_named_setting(table, [&](const char*, const char* parameter, auto, const auto&) {
+    const std::string name = parameter;
+    CHECK(states(soup_parameters, "`" + name + (name == "feature_angle" ? "` is rejected" : "`")));
+  });
+  for(const char* parameter :
+      {"fairing_method", "deviation_bound", "box_half_extents", "iteration_callback", "sparse_linear_solver",
+       "vertex_tolerance_map", "vertex_is_constrained_map", "vertex_box_half_extents_map", "vertex_box_center_map",
+       "vertex_deviation_map", "vertex_at_bound_map"})
+    CHECK(states(soup_parameters, std::string("`") + parameter + "`"));
+
   // The barrier against folds on label surfaces (Fold_barrier.h), in both manuals.
   const std::string angle = number(CF::interface_fold_angle);
   for(const std::string* text : {&interfaces, &manual})

@@ -533,6 +533,10 @@ void check_bad_input()
   check_rejected(soup.points, soup.triangles, soup.face_labels, 0, D::INVALID_EPSILON, box);
   check_rejected(soup.points, soup.triangles, soup.face_labels, 1, D::INVALID_BOX_EXTENTS,
                  CFP::box_half_extents(std::array<double, 3>{0.5, -1, 0.5}));
+  // a soup detects no creases: feature_angle is rejected, not ignored, whatever its value
+  for(double angle : {30., 200.})
+    check_rejected(soup.points, soup.triangles, soup.face_labels, 1, D::INVALID_FEATURE_ANGLE,
+                   CFP::feature_angle(angle, box));
 }
 
 int main()

@@ -193,7 +193,8 @@ void check_known_minimizer()
   CF::Projected_lbfgs<CF::Normal_offset_bound<Bound>, CF::Normal_offset_objective<Separable_quadratic, Bound> > solver(
     segments, offsets);
   CF::Points X = lines.S;
-  CF::Solver_options options;
+  // the paper's methods' window, with no threshold
+  CF::Solver_options options = CF::default_options(PMP::Constrained_fairing_method::ACTIVE_SET_NEWTON);
   options.max_iterations = 500;
   options.threshold = 0;
   std::vector<double> energies;

@@ -16,6 +16,7 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Deviation_bounds.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/Fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Active_set_newton.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Solvers/Projected_lbfgs.h>
 
@@ -176,7 +177,8 @@ template <typename Bound>
 void check_run(const Setting& setting, const Bound& bound, Deviation_bound shape, Quadratic& f,
                Constrained_fairing_method method, const Points& X_star, const char* problem)
 {
-  CF::Solver_options options;
+  // the paper's methods' window, for each method
+  CF::Solver_options options = CF::default_options(Constrained_fairing_method::ACTIVE_SET_NEWTON);
   options.threshold = 0; // on until no step decreases the energy any more
   options.max_iterations = 5000;
   options.cauchy_steps_only = method == Constrained_fairing_method::PROJECTED_GRADIENT;

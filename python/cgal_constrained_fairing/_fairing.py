@@ -46,12 +46,14 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
     """Fair a triangle mesh: remove its noise while every vertex stays within `epsilon`.
 
     Minimizes the discrete bending energy of the mesh (Hildebrandt and Polthier, "Constraint-based
-    fairing of surface meshes", SGP 2007) over all vertex positions ``p`` with
-    ``|p - p0| <= epsilon``, ``p0`` the input position. Set `epsilon` to the accuracy of the data
-    (a scanner's precision, the voxel size of an isosurface): noise and terracing go, that accuracy
-    stays. The connectivity does not change. This is ``CGAL::Polygon_mesh_processing::
-    constrained_fairing()``, called on the ``CGAL::Surface_mesh`` that a C++ program builds from
-    the same arrays: the result is bit-identical to that call's, and to the command-line tool's.
+    fairing of surface meshes", SGP 2007) over vertex positions ``p`` with
+    ``|p - p0| <= epsilon``, ``p0`` the input position; by default over the positions along the
+    normals of a smoothed start only (see `tangential_motion`). Set `epsilon` to the accuracy of
+    the data (a scanner's precision, the voxel size of an isosurface): noise and terracing go,
+    that accuracy stays. The connectivity does not change. This is
+    ``CGAL::Polygon_mesh_processing::constrained_fairing()``, called on the ``CGAL::Surface_mesh``
+    that a C++ program builds from the same arrays: the result is bit-identical to that call's,
+    and to the command-line tool's.
 
     The bound holds exactly in double precision, with no tolerance::
 

@@ -63,7 +63,8 @@ enum class Constrained_fairing_defect
   INVALID_FIDELITY_WEIGHT,
   /// `sliver_barrier_weight` is negative, NaN or infinite
   INVALID_SLIVER_BARRIER_WEIGHT,
-  /// `feature_angle` is not a number of degrees strictly between 0 and 180
+  /// `feature_angle` is not a number of degrees strictly between 0 and 180, or was given to
+  /// `constrained_fairing_of_interfaces()`, which detects no creases
   INVALID_FEATURE_ANGLE,
   /// box parameters were given with `deviation_bound(Deviation_bound::BALL)`
   BOX_WITH_BALL,

@@ -188,11 +188,6 @@ long as `put()` on the vertex point map does not throw. A run stopped by the cal
                    `%Point_3` as value type}
     \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
   \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of iterations; `0` leaves the mesh untouched. An
                           iteration is one accepted step of the quasi-Newton method (usually one

@@ -74,10 +74,13 @@ bit-identical, as on every other failure.
 \param epsilon the largest distance a point may move, and the cap of every other size
 \param np the named parameters of `constrained_fairing()` that apply to a soup:
        `number_of_iterations`, `fairing_method`, `fairing_objective`, `fidelity_weight`,
-       `sliver_barrier_weight`, `energy_decrease_threshold`, `initial_smoothing_steps`,
+       `sliver_barrier_weight`, `tangential_motion`, `energy_decrease_threshold`,
+       `conjugate_gradient_iterations`, `initial_smoothing_steps`, `sparse_linear_solver`,
        `iteration_callback`, `deviation_bound`, `box_half_extents`, and the per-point maps
        `vertex_tolerance_map`, `vertex_is_constrained_map`, `vertex_box_half_extents_map`,
-       `vertex_box_center_map`, `vertex_deviation_map`, `vertex_at_bound_map`
+       `vertex_box_center_map`, `vertex_deviation_map`, `vertex_at_bound_map`. `feature_angle`
+       is rejected (`Constrained_fairing_defect::INVALID_FEATURE_ANGLE`): a soup's curves are
+       its junction lines, and no creases are detected
 
 \return a `Constrained_fairing_result`, whose fixed vertices include the points that stay where
         junction lines end, branch, or four labels meet

@@ -39,11 +39,10 @@ class Fidelity_anchor
 {
 public:
   // The stages' sizes, chosen on the benchmark fairing_accuracy over its whole set of meshes
-  // and noise levels: the Taubin steps, the normal filter's steps and the Gaussian's width in
-  // the difference of unit normals (0.4: about 23 degrees), and the vertex fit's steps.
+  // and noise levels: the Taubin steps, the normal filter's steps (its Gaussian's width is the
+  // filter's, Normal_filter.h) and the vertex fit's steps.
   static constexpr std::size_t anchor_taubin_steps = 10;
   static constexpr std::size_t normal_filter_steps = 5;
-  static constexpr double normal_difference_sigma = 0.4;
   static constexpr std::size_t normal_fit_steps = 10;
 
   explicit Fidelity_anchor(const Hinge_mesh& mesh)
@@ -56,7 +55,7 @@ public:
   {
     smooth_start(m_mesh, bound, anchor_taubin_steps, X);
     m_filter.set_points(X);
-    m_filter.filter(normal_filter_steps, normal_difference_sigma);
+    m_filter.filter(normal_filter_steps);
     for(std::size_t step = 0; step < normal_fit_steps; ++step)
     {
       fit_vertices(X);

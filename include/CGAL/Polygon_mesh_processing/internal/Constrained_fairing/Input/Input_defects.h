@@ -166,6 +166,12 @@ inline Input_error invalid_feature_angle_error(double degrees)
           "feature_angle must be a number of degrees strictly between 0 and 180 (" + defect_message::number(degrees) + ")"};
 }
 
+inline Input_error feature_angle_without_creases_error()
+{
+  return {Defect::INVALID_FEATURE_ANGLE,
+          "feature_angle does not apply to a multi-label surface, whose junction lines are its curves"};
+}
+
 inline Input_error box_with_ball_error()
 {
   return {Defect::BOX_WITH_BALL, "box half-extents or centres were given with the ball bound"};

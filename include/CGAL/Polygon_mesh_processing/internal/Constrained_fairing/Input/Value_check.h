@@ -28,7 +28,8 @@ namespace internal {
 namespace Constrained_fairing {
 
 // The parts (Mesh_part.h, Interface_part.h) give size(), number(k) (vertex k's number in
-// messages), is_fixed(k) and for_each_vertex(f), f(k, key) with the key of the per-vertex maps.
+// messages), is_fixed(k), for_each_vertex(f), f(k, key) with the key of the per-vertex maps, and
+// `detects_creases`, whether `feature_angle` applies.
 
 template <typename Part>
 Input_error coordinate_error(const Part& part, const Points& X0)
@@ -56,11 +57,15 @@ inline Input_error sliver_barrier_weight_error(const Fairing_settings& settings)
   return std::isfinite(w) && w >= 0 ? Input_error() : invalid_sliver_barrier_weight_error(w);
 }
 
-// NaN fails both comparisons.
-inline Input_error feature_angle_error(const Fairing_settings& settings)
+// NaN fails both comparisons. Where the part's input has no creases to detect (a multi-label
+// surface), any angle is rejected rather than ignored.
+template <typename Part>
+Input_error feature_angle_error(const Part&, const Fairing_settings& settings)
 {
   if(!settings.feature_angle)
     return {};
+  if(!Part::detects_creases)
+    return feature_angle_without_creases_error();
   const double degrees = *settings.feature_angle;
   return degrees > 0 && degrees < 180 ? Input_error() : invalid_feature_angle_error(degrees);
 }
@@ -147,7 +152,7 @@ Input_error value_error(const Part& part, const Points& X0, const Triangles& tri
                         const Fairing_settings& settings, const VertexMaps& maps)
 {
   for(Input_error error : {coordinate_error(part, X0), epsilon_error(epsilon), fidelity_weight_error(settings),
-                           sliver_barrier_weight_error(settings), feature_angle_error(settings),
+                           sliver_barrier_weight_error(settings), feature_angle_error(part, settings),
                            bound_shape_error(settings),
                            box_half_extents_error(settings)})
     if(error)

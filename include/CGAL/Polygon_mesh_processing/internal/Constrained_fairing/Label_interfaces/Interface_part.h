@@ -20,6 +20,10 @@ namespace Constrained_fairing {
 class Interface_part
 {
 public:
+  // No creases are detected: the junction lines are the surface's curves (`feature_angle` is
+  // rejected, Value_check.h).
+  static constexpr bool detects_creases = false;
+
   explicit Interface_part(std::vector<bool> fixed) : m_fixed(std::move(fixed)) {}
 
   std::size_t size() const { return m_fixed.size(); }

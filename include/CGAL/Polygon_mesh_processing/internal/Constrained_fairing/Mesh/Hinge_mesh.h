@@ -38,6 +38,13 @@ struct Hinge
   std::array<Index, 2> f;
 };
 
+// An edge as its two vertices, the smaller first, as the hinges hold theirs and the creases are
+// kept (Feature_edges.h).
+inline std::array<Index, 2> sorted_edge(Index a, Index b)
+{
+  return a < b ? std::array<Index, 2>{a, b} : std::array<Index, 2>{b, a};
+}
+
 // The arrays are sorted by vertex indices, so that they depend only on the order of the
 // vertices, not on how the graph stores its faces and edges: two mesh data structures
 // holding the same mesh give bit-identical results.

@@ -312,10 +312,32 @@ private:
   double evaluate_tile(const Tile& tile, Scratch& scratch, Points* G, Stiffness_and_reach* scales,
                        const Triangle_terms& terms, const Fold_barrier& folds) const
   {
+    compute_frames<gradient>(tile, scratch);
+    if constexpr(gradient)
+      clear_gradient(tile, *G, scales);
+    double energy = 0;
+    add_hinges<gradient>(tile, scratch, G, folds, energy);
+    if constexpr(!gradient)
+    {
+      add_triangle_values(tile, terms, energy);
+      return energy;
+    }
+    else
+    {
+      add_corners(tile, scratch, *G, scales, terms, energy);
+      scale_back(tile, *G, scales);
+      return energy;
+    }
+  }
+
+  // The frames of the tile's triangles at the points: for the energy those of the tile's own
+  // hinges' triangles, which contain a vertex of the tile; for the gradient all of them, their
+  // hinges' coefficients and weights cleared.
+  template <bool gradient>
+  void compute_frames(const Tile& tile, Scratch& scratch) const
+  {
     const Points& P = *m_points;
     const std::array<Index, 3>* triangles = m_tile_triangles.data() + tile.triangle_begin;
-    // The energy needs the frames of the tile's own hinges' triangles, which contain a vertex
-    // of the tile; the gradient all of them.
     const std::size_t frames = (gradient ? tile.triangle_end : tile.owned_triangle_end) - tile.triangle_begin;
     for(std::size_t k = 0; k < frames; ++k)
     {
@@ -333,21 +355,31 @@ private:
         scratch.frame[k].hinge_weight = 0;
       }
     }
+  }
 
-    // A vertex of the tile gets the terms of its hinges' edges, in the tile's hinge order, as
-    // they are computed.
-    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
-    if(gradient)
-      for(std::size_t i = first; i < tile.vertex_end; ++i)
+  // The gradient, and the scales if asked, of the tile's vertices set to zero, before the terms
+  // are added to them.
+  static void clear_gradient(const Tile& tile, Points& G, Stiffness_and_reach* scales)
+  {
+    for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
+    {
+      point(G, i).setZero();
+      if(scales)
       {
-        point(*G, i).setZero();
-        if(scales)
-        {
-          scales->stiffness[static_cast<Eigen::Index>(i)] = 0;
-          scales->reach[static_cast<Eigen::Index>(i)] = 0;
-        }
+        scales->stiffness[static_cast<Eigen::Index>(i)] = 0;
+        scales->reach[static_cast<Eigen::Index>(i)] = 0;
       }
-    double energy = 0;
+    }
+  }
+
+  // Adds the terms of the tile's own hinges, in order, to `energy`; with `gradient`, goes over
+  // all the tile's hinges, adding each one's coefficients and weights to its triangles' frames
+  // and its edge's term to its vertices in the tile, as they are computed.
+  template <bool gradient>
+  void add_hinges(const Tile& tile, Scratch& scratch, Points* G, const Fold_barrier& folds, double& energy) const
+  {
+    const Points& P = *m_points;
+    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
     const std::size_t owned = tile.owned_hinge_end - tile.hinge_begin;
     const std::size_t hinges = (gradient ? tile.hinge_end : tile.owned_hinge_end) - tile.hinge_begin;
     for(std::size_t j = 0; j < hinges; ++j)
@@ -376,21 +408,39 @@ private:
       if(hinge.v[1] - first < size)
         point(*G, hinge.v[1]) += edge_term;
     }
-    const Index* ids = m_tile_triangle_ids.data() + tile.triangle_begin;
-    if(!gradient)
-    {
-      if(Triangle_terms::active)
-        for(std::size_t k = 0; k < tile.owned_triangle_end - tile.triangle_begin; ++k)
-        {
-          const auto& v = triangles[k];
-          if(v[0] - first < size)
-            energy += terms.value(ids[k], {point(P, v[0]), point(P, v[1]), point(P, v[2])});
-        }
-      return energy;
-    }
+  }
 
-    // Then the corners' terms. Each triangle's edges are computed once, for its corners in
-    // the tile.
+  // Adds the terms of the triangles that count in the tile (those of its first corner in it), in
+  // order, to `energy`.
+  template <typename Triangle_terms>
+  void add_triangle_values(const Tile& tile, const Triangle_terms& terms, double& energy) const
+  {
+    if(!Triangle_terms::active)
+      return;
+    const Points& P = *m_points;
+    const std::array<Index, 3>* triangles = m_tile_triangles.data() + tile.triangle_begin;
+    const Index* ids = m_tile_triangle_ids.data() + tile.triangle_begin;
+    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
+    for(std::size_t k = 0; k < tile.owned_triangle_end - tile.triangle_begin; ++k)
+    {
+      const auto& v = triangles[k];
+      if(v[0] - first < size)
+        energy += terms.value(ids[k], {point(P, v[0]), point(P, v[1]), point(P, v[2])});
+    }
+  }
+
+  // Then the corners' terms of the gradient: for each triangle with a corner in the tile, its
+  // triangle terms' gradient (their values added to `energy` where they count in the tile), then
+  // its frame's coefficient at its corners in the tile, and with `scales` their stiffness and
+  // inverse squared reach. Each triangle's edges are computed once, for its corners in the tile.
+  template <typename Triangle_terms>
+  void add_corners(const Tile& tile, const Scratch& scratch, Points& G, Stiffness_and_reach* scales,
+                   const Triangle_terms& terms, double& energy) const
+  {
+    const Points& P = *m_points;
+    const std::array<Index, 3>* triangles = m_tile_triangles.data() + tile.triangle_begin;
+    const Index* ids = m_tile_triangle_ids.data() + tile.triangle_begin;
+    const std::size_t first = tile.vertex_begin, size = tile.vertex_end - tile.vertex_begin;
     for(std::size_t k = 0; k < tile.owned_triangle_end - tile.triangle_begin; ++k)
     {
       const auto& v = triangles[k];
@@ -401,7 +451,7 @@ private:
         for(std::size_t corner = 0; corner < 3; ++corner)
           if(v[corner] - first < size)
             corners |= 1u << corner;
-        const double term = terms.add_gradient(ids[k], v, p, corners, *G, scales);
+        const double term = terms.add_gradient(ids[k], v, p, corners, G, scales);
         if(v[0] - first < size)
           energy += term;
       }
@@ -411,7 +461,7 @@ private:
         if(v[corner] - first >= size)
           continue;
         const Eigen::Vector3d opposite = p[(corner + 2) % 3] - p[(corner + 1) % 3];
-        point(*G, v[corner]) += scratch.frame[k].coefficient.cross(opposite);
+        point(G, v[corner]) += scratch.frame[k].coefficient.cross(opposite);
         if(scales)
         {
           // the stiffness and the inverse squared reach, until scaled below
@@ -422,11 +472,16 @@ private:
         }
       }
     }
-    const double scale = m_unit_scaled.scale(); // back from the scaled points: E(s X) = E(X)
-    for(std::size_t i = first; i < tile.vertex_end; ++i)
+  }
+
+  // The gradient and the scales of the tile's vertices back from the scaled points: E(s X) = E(X).
+  void scale_back(const Tile& tile, Points& G, Stiffness_and_reach* scales) const
+  {
+    const double scale = m_unit_scaled.scale();
+    for(std::size_t i = tile.vertex_begin; i < tile.vertex_end; ++i)
     {
       if(scale != 1)
-        point(*G, i) = Eigen::Vector3d(scale * point(*G, i));
+        point(G, i) = Eigen::Vector3d(scale * point(G, i));
       if(scales)
       {
         const auto row = static_cast<Eigen::Index>(i);
@@ -435,7 +490,6 @@ private:
                                                     : std::numeric_limits<double>::infinity();
       }
     }
-    return energy;
   }
 
   double sum_of_partials() const

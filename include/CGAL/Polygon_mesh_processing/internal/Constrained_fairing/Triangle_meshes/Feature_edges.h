@@ -9,7 +9,7 @@
 // `jump_ratio` times the smaller angle across each face's other hinges; then the curves that end
 // freely after fewer than `shortest_spur` edges (spurs off a crease, isolated edges) and the closed
 // curves of fewer edges are dropped, until none is left; the curves' detours off their line are
-// straightened (`straighten_creases`), judged at points smoothed by Taubin steps, since the noise
+// straightened (Crease_straightening.h), judged at points smoothed by Taubin steps, since the noise
 // moves a vertex by more than the distances that tell which of two vertices the crease passes. Why
 // filtered normals: the dihedral angles of a noisy mesh scatter by tens of degrees (0.25 times the
 // edge length of noise turns a face by about 20 degrees), so a dihedral test on the input marks
@@ -21,11 +21,13 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Crease_straightening.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -33,7 +35,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -41,18 +42,16 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
+// The normal filter's steps (its Gaussian's width is the filter's, Normal_filter.h), the
+// shortest spur and the jump (top of this file).
 struct Feature_detection
 {
   static constexpr std::size_t filter_steps = 10;
-  static constexpr double normal_difference_sigma = 0.4;
   static constexpr std::size_t shortest_spur = 8;
   static constexpr double jump_ratio = 1.5;
-  // a jog round a vertex is swapped to it where the vertex is this many times nearer the line
-  // (where the crease's sides are not apart: below)
-  static constexpr double jog_ratio = 1.5;
-  // Taubin steps (Smoothed_start.h) before the jogs are judged, as many as the accurate
-  // objective's anchor takes (Fidelity_anchor.h)
-  static constexpr std::size_t jog_smoothing_steps = 10;
+  // Taubin steps (Smoothed_start.h) before the jogs are judged: the accurate objective's
+  // anchor's, which the jogs' sweep from 0 to 40 steps kept
+  static constexpr std::size_t jog_smoothing_steps = Fidelity_anchor::anchor_taubin_steps;
 };
 
 // A bound that holds every point: Taubin steps in free space.
@@ -60,12 +59,6 @@ struct No_bound
 {
   void project(Points&) const {}
 };
-
-// An edge as its two vertices, the smaller first.
-inline std::array<Index, 2> sorted_edge(Index a, Index b)
-{
-  return a < b ? std::array<Index, 2>{a, b} : std::array<Index, 2>{b, a};
-}
 
 // Drops the curves of `edges` (sorted, each once) that end freely after fewer than `shortest`
 // edges, the closed curves of fewer, and the clusters of fewer edges however joined, until none
@@ -152,213 +145,13 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
   }
 }
 
-// Straightens the crease curves `edges` (sorted, each once) of `mesh` where they detour by a
-// triangle or two off their line, which a noisy crease's detection does: the faces between the
-// detour and the true crease are then faired into the wrong side's plane, turned by the
-// crease's angle. A chain of two or three edges from u to w through vertices on no other crease
-// edge is replaced by the hinge u w if there is one, a chain of three around a vertex x on no
-// crease by u x w, and a chain of two u y w around such a vertex x (the two triangles' other
-// side) by u x w where x is nearer the crease than y is (`nearer_crease` below: across the
-// crease by the planes of its sides, whose normals `face_normal(f)` gives, where they are more
-// than `degrees` apart), and of two chains of two u y w and u z w (a diamond) the one farther
-// from the line u w is dropped; each only if the curve heads on alike on both sides of the chain
-// (a corner of the curve is kept).
-// The other moves take edges off, and a swap takes off a vertex that no swap puts back, so the
-// moves end; a smooth curve has no chain of the first two kinds (it would turn by 120 degrees
-// within one or two edges).
-template <typename Face_normal>
-void straighten_creases(const Hinge_mesh& mesh, const Points& X, const Face_normal& face_normal, double degrees,
-                        std::vector<std::array<Index, 2> >& edges)
-{
-  if(edges.empty())
-    return;
-  const std::size_t n = mesh.number_of_vertices;
-  const Rows_by_vertex<Index> faces_around(n, [&](const auto& add) {
-    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-      for(Index v : mesh.triangles[f])
-        add(v, Index(f));
-  });
-  const auto has_corner = [](const std::array<Index, 3>& t, Index v) { return t[0] == v || t[1] == v || t[2] == v; };
-  // The plane of the faces around v that do not have `other` as a corner: the mean of their
-  // normals, through the mean of their corners but v (so that v's own noise is not in it).
-  // False where those normals cancel.
-  const auto side_plane = [&](Index v, Index other, Eigen::Vector3d& normal, double& offset) {
-    normal.setZero();
-    for(auto f = faces_around.begin(v); f != faces_around.end(v); ++f)
-      if(!has_corner(mesh.triangles[*f], other))
-        normal += face_normal(*f);
-    if(!(normal.norm() > 0))
-      return false;
-    normal.normalize();
-    offset = 0;
-    std::size_t count = 0;
-    for(auto f = faces_around.begin(v); f != faces_around.end(v); ++f)
-      if(!has_corner(mesh.triangles[*f], other))
-        for(Index c : mesh.triangles[*f])
-          if(c != v)
-          {
-            offset += normal.dot(X.row(c).transpose());
-            ++count;
-          }
-    offset /= double(count);
-    return true;
-  };
-  const double apart = std::cos(degrees * CGAL_PI / 180);
-  const Rows_by_vertex<Index> neighbours(n, [&](const auto& add) {
-    for(const Hinge& h : mesh.hinges)
-    {
-      add(h.v[0], h.v[1]);
-      add(h.v[1], h.v[0]);
-    }
-  });
-  const auto adjacent = [&](Index a, Index b) {
-    return std::find(neighbours.begin(a), neighbours.end(a), b) != neighbours.end(a);
-  };
-  std::set<std::array<Index, 2> > creases(edges.begin(), edges.end());
-  std::vector<unsigned> degree(n, 0);
-  for(const auto& e : edges)
-    for(Index v : e)
-      ++degree[v];
-  const auto remove = [&](Index a, Index b) {
-    creases.erase(sorted_edge(a, b));
-    --degree[a];
-    --degree[b];
-  };
-  const auto insert = [&](Index a, Index b) {
-    creases.insert(sorted_edge(a, b));
-    ++degree[a];
-    ++degree[b];
-  };
-  const auto crease_neighbour = [&](Index v, Index not_this) {
-    for(auto w = neighbours.begin(v); w != neighbours.end(v); ++w)
-      if(*w != not_this && creases.count(sorted_edge(v, *w)))
-        return *w;
-    return v;
-  };
-  // Whether the curve heads on alike before u (coming from u's crease neighbour other than
-  // `from_u`) and after w (towards w's other than `from_w`), within 60 degrees, two edges away
-  // where it can: a detour does, a corner of the curve does not. Ends and junctions tell
-  // nothing, and allow the move.
-  const auto two_edges_on = [&](Index v, Index from) {
-    for(std::size_t step = 0; step < 2 && degree[v] == 2; ++step)
-    {
-      const Index next = crease_neighbour(v, from);
-      from = v;
-      v = next;
-    }
-    return v;
-  };
-  const auto continues = [&](Index u, Index from_u, Index w, Index from_w) {
-    if(degree[u] != 2 || degree[w] != 2)
-      return true;
-    const Eigen::Vector3d a = (X.row(u) - X.row(two_edges_on(u, from_u))).transpose();
-    const Eigen::Vector3d b = (X.row(two_edges_on(w, from_w)) - X.row(w)).transpose();
-    return a.dot(b) > 0.5 * a.norm() * b.norm();
-  };
-  // How far m is from the line through u and w, times |w - u|.
-  const auto off_chord = [&](Index m, Index u, Index w) {
-    const Eigen::Vector3d a = (X.row(m) - X.row(u)).transpose(), b = (X.row(w) - X.row(u)).transpose();
-    return a.cross(b).norm();
-  };
-  // Whether a chain u y w should go round x instead (the vertex of its two triangles on no
-  // crease). A crease lies on the planes of both its sides, so where the sides (x's faces but
-  // the two, and y's but those) are more than the angle apart: whether x is nearer y's side's
-  // plane than y is to x's, a test across the crease whose planes average the noise, and nearer
-  // the line u w, which the noise alone can turn; where the sides are not apart, whether x is
-  // clearly nearer the line.
-  const auto nearer_crease = [&](Index x, Index y, Index u, Index w, double y_off) {
-    const double x_off = off_chord(x, u, w);
-    if(!(x_off < y_off))
-      return false;
-    Eigen::Vector3d n_x, n_y;
-    double c_x = 0, c_y = 0;
-    if(side_plane(x, y, n_x, c_x) && side_plane(y, x, n_y, c_y) && n_x.dot(n_y) < apart)
-      return std::abs(n_y.dot(X.row(x).transpose()) - c_y) < std::abs(n_x.dot(X.row(y).transpose()) - c_x);
-    return Feature_detection::jog_ratio * x_off < y_off;
-  };
-  // the vertices a swap took off a curve, which no swap puts back (so that the swaps end)
-  std::vector<bool> taken_off(n, false);
-  // Tries the moves on the chain from u through u's crease neighbour `first`; true if one was made.
-  const auto straighten = [&](Index u, Index first) {
-    std::array<Index, 4> chain = {u, first, u, u};
-    for(std::size_t k = 2; k <= 3; ++k)
-    {
-      const Index inner = chain[k - 1];
-      if(degree[inner] != 2)
-        return false;
-      chain[k] = crease_neighbour(inner, chain[k - 2]);
-      const Index w = chain[k];
-      if(w == u)
-        return false;
-      if(!continues(u, chain[1], w, chain[k - 1]))
-        continue;
-      if(adjacent(u, w) && !creases.count(sorted_edge(u, w)))
-      {
-        for(std::size_t j = 0; j < k; ++j)
-          remove(chain[j], chain[j + 1]);
-        insert(u, w);
-        return true;
-      }
-      if(k == 2)
-      {
-        const double inner_off = off_chord(inner, u, w);
-        for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
-        {
-          // the other path of a diamond, nearer the line (inner itself is not)
-          if(degree[*x] == 2 && creases.count(sorted_edge(u, *x)) && creases.count(sorted_edge(*x, w)) &&
-             off_chord(*x, u, w) < inner_off)
-          {
-            remove(u, inner);
-            remove(inner, w);
-            return true;
-          }
-          // the vertex the jog goes round, nearer the crease
-          if(degree[*x] == 0 && !taken_off[*x] && adjacent(*x, w) && adjacent(*x, inner) &&
-             nearer_crease(*x, inner, u, w, inner_off))
-          {
-            remove(u, inner);
-            remove(inner, w);
-            insert(u, *x);
-            insert(*x, w);
-            taken_off[inner] = true;
-            return true;
-          }
-        }
-      }
-      if(k == 3)
-        for(auto x = neighbours.begin(u); x != neighbours.end(u); ++x)
-          if(degree[*x] == 0 && adjacent(*x, w))
-          {
-            for(std::size_t j = 0; j < k; ++j)
-              remove(chain[j], chain[j + 1]);
-            insert(u, *x);
-            insert(*x, w);
-            return true;
-          }
-    }
-    return false;
-  };
-  for(bool moved = true; moved;)
-  {
-    moved = false;
-    for(Index u = 0; u < Index(n); ++u)
-      for(auto v = neighbours.begin(u); v != neighbours.end(u) && degree[u] > 0; ++v)
-        if(creases.count(sorted_edge(u, *v)) && straighten(u, *v))
-        {
-          moved = true;
-          break;
-        }
-  }
-  edges.assign(creases.begin(), creases.end());
-}
-
 // The hinges of `mesh` whose faces' filtered normals at X are more than `degrees` apart, and
 // jump (above), short curves dropped: sorted, each once.
 inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh& mesh, const Points& X, double degrees)
 {
   Normal_filter filter(mesh);
   filter.set_points(X);
-  filter.filter(Feature_detection::filter_steps, Feature_detection::normal_difference_sigma);
+  filter.filter(Feature_detection::filter_steps);
   // Each hinge's angle between the filtered normals, and each face's hinges.
   constexpr Index no_hinge = ~Index(0);
   std::vector<double> angle(mesh.hinges.size());

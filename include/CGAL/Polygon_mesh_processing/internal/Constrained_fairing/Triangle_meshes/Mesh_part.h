@@ -29,6 +29,9 @@ public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
+  // `feature_angle` detects creases (Feature_edges.h).
+  static constexpr bool detects_creases = true;
+
   // `is_constrained(v)`: whether the user fixed vertex v.
   // The whole mesh: no list is stored, the vertices are those of `tmesh` in their order.
   template <typename IsConstrained>
