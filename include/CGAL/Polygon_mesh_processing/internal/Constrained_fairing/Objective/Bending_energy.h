@@ -218,14 +218,12 @@ private:
     return nt == 0 ? 0 : area_regularization * sum / double(nt);
   }
 
-  // The tiles: the triangles and hinges each needs.
-  void build_tiles(const std::vector<bool>& degenerate)
-  {
-    const std::size_t n = m_mesh.number_of_vertices, nt = m_mesh.triangles.size();
-    constexpr Index none = ~Index(0);
+  static constexpr Index no_hinge = ~Index(0);
 
-    // The counted hinges of each triangle.
-    std::vector<std::array<Index, 3> > triangle_hinges(nt, {none, none, none});
+  // The counted hinges of each triangle (no_hinge for the others), and their number.
+  std::vector<std::array<Index, 3> > counted_hinges(const std::vector<bool>& degenerate)
+  {
+    std::vector<std::array<Index, 3> > triangle_hinges(m_mesh.triangles.size(), {no_hinge, no_hinge, no_hinge});
     m_number_of_hinges = 0;
     for(std::size_t h = 0; h < m_mesh.hinges.size(); ++h)
     {
@@ -234,8 +232,17 @@ private:
         continue;
       ++m_number_of_hinges;
       for(Index f : hinge.f)
-        *std::find(triangle_hinges[f].begin(), triangle_hinges[f].end(), none) = static_cast<Index>(h);
+        *std::find(triangle_hinges[f].begin(), triangle_hinges[f].end(), no_hinge) = static_cast<Index>(h);
     }
+    return triangle_hinges;
+  }
+
+  // The tiles: the triangles and hinges each needs.
+  void build_tiles(const std::vector<bool>& degenerate)
+  {
+    const std::size_t n = m_mesh.number_of_vertices, nt = m_mesh.triangles.size();
+    constexpr Index none = no_hinge;
+    const std::vector<std::array<Index, 3> > triangle_hinges = counted_hinges(degenerate);
     const Rows_by_vertex<Index> around = vertex_triangles(m_mesh);
 
     // Each tile's triangles, numbered in the tile by `slot` (valid where `stamp` is the tile's

@@ -101,29 +101,7 @@ public:
         report.status = Constrained_fairing_status::CONVERGED;
         break;
       }
-      m_active.compute(m_bound, X, m_G);
-      double slope = 0;
-      const auto write_restricted_negative_gradient = [&](Points& D, std::size_t begin, std::size_t end) {
-        for(std::size_t i = begin; i < end; ++i)
-          point(D, i) = -point(m_G, i);
-        m_active.restrict_range(D, begin, end);
-      };
-      if(m_H.number_of_pairs() > 0 && m_H.start(m_D, m_scales.stiffness, write_restricted_negative_gradient))
-        slope = finish_direction([&](std::size_t begin, std::size_t end) {
-          m_H.finish_rows(m_D, begin, end);
-          m_active.restrict_range(m_D, begin, end);
-        });
-      if(m_H.number_of_pairs() == 0 || !(slope < 0))
-      {
-        m_H.clear();
-        m_D.resize(m_G.rows(), 3);
-        parallel_for_blocks(static_cast<std::size_t>(m_G.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
-          write_restricted_negative_gradient(m_D, begin, end);
-        });
-        apply_inverse_stiffness(m_scales, m_D, m_D, t_gradient);
-        slope = finish_direction([](std::size_t, std::size_t) {});
-      }
-
+      const double slope = find_direction(X, t_gradient);
       const auto sufficient = [&](double e, const Points& Y) {
         return e < E + sufficient_decrease * dot_with_difference(m_G, Y, X, m_partial);
       };
@@ -159,6 +137,36 @@ public:
   }
 
 private:
+  // The direction m_D at X, restricted to the faces of the active bounds, and its slope: the
+  // quasi-Newton pairs' if it descends, else (the pairs dropped) the projected gradient scaled
+  // by the inverse stiffness and the gradient step t_gradient.
+  double find_direction(const Points& X, double t_gradient)
+  {
+    m_active.compute(m_bound, X, m_G);
+    double slope = 0;
+    const auto write_restricted_negative_gradient = [&](Points& D, std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i)
+        point(D, i) = -point(m_G, i);
+      m_active.restrict_range(D, begin, end);
+    };
+    if(m_H.number_of_pairs() > 0 && m_H.start(m_D, m_scales.stiffness, write_restricted_negative_gradient))
+      slope = finish_direction([&](std::size_t begin, std::size_t end) {
+        m_H.finish_rows(m_D, begin, end);
+        m_active.restrict_range(m_D, begin, end);
+      });
+    if(m_H.number_of_pairs() == 0 || !(slope < 0))
+    {
+      m_H.clear();
+      m_D.resize(m_G.rows(), 3);
+      parallel_for_blocks(static_cast<std::size_t>(m_G.rows()), [&](std::size_t begin, std::size_t end, std::size_t) {
+        write_restricted_negative_gradient(m_D, begin, end);
+      });
+      apply_inverse_stiffness(m_scales, m_D, m_D, t_gradient);
+      slope = finish_direction([](std::size_t, std::size_t) {});
+    }
+    return slope;
+  }
+
   // Calls `rows(begin, end)` on each block of D (the direction's last steps), shortens the
   // displacement of each vertex to at most `reach_fraction` of its reach, and returns the slope
   // <D, G>, in one pass. Why the reach: then no step can flip or collapse a triangle (see
