@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Mesh files as the front ends read them (the command-line tool, the Python module): any
-// format CGAL reads, as a polygon soup checked by Polygon_soup_check.h and made into a mesh by
-// polygon_soup_to_polygon_mesh(), which keeps the file's order of vertices and faces; faces of
-// more than three vertices triangulated. A PLY file may also give a number per vertex, read in
+// format CGAL reads, as a polygon soup checked by the library's soup check
+// (constrained_fairing_input_check.h) and made into a mesh by polygon_soup_to_polygon_mesh(),
+// which keeps the file's order of vertices and faces; faces of more than three vertices
+// triangulated. A PLY file may also give a number per vertex, read in
 // the same pass. Failures are one line naming the file, made here: CGAL's readers are called
 // quiet, since their own explanations go to std::cerr, which belongs to the whole process (the
 // Python module reads files on several threads at once).
@@ -15,11 +16,11 @@
 #include <CGAL/IO/PLY/PLY_reader.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/iterator.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include "front_end/Ply_properties.h"
-#include "front_end/Polygon_soup_check.h"
 #include "front_end/Soup_repair.h"
 
 #include <algorithm>
@@ -243,7 +244,7 @@ std::string make_triangle_mesh(const std::string& path, const std::vector<Point>
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using Defect = CGAL::Polygon_mesh_processing::Constrained_fairing_defect;
-  if(const Input_error soup = polygon_soup_error(points.size(), polygons))
+  if(const PMP::Constrained_fairing_input_error soup = PMP::constrained_fairing_polygon_soup_error(points.size(), polygons))
   {
     const bool repairable = soup.defect == Defect::NON_MANIFOLD_EDGE || soup.defect == Defect::NON_MANIFOLD_VERTEX ||
                             soup.defect == Defect::INCONSISTENT_ORIENTATION ||
@@ -304,7 +305,8 @@ std::string read_triangle_mesh_file(const std::string& path, bool properties, bo
   if(repair)
   {
     contents.repair.emplace();
-    if(const Input_error defect = repair_polygon_soup(points, polygons, *contents.repair))
+    if(const CGAL::Polygon_mesh_processing::Constrained_fairing_input_error defect =
+         repair_polygon_soup(points, polygons, *contents.repair))
       return path + ": " + defect.message;
     contents.vertex_origin = contents.repair->point_origin;
     polygon_origin = contents.repair->polygon_origin;
