@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Mesh files as the front ends read them (the command-line tool, the Python module): any
-// format CGAL reads, as a polygon soup checked by Polygon_soup_check.h and made into a mesh by
-// polygon_soup_to_polygon_mesh(), which keeps the file's order of vertices and faces; faces of
-// more than three vertices triangulated. A PLY file may also give a number per vertex, read in
+// format CGAL reads, as a polygon soup checked by the library's soup check
+// (constrained_fairing_input_check.h) and made into a mesh by polygon_soup_to_polygon_mesh(),
+// which keeps the file's order of vertices and faces; faces of more than three vertices
+// triangulated. A PLY file may also give a number per vertex, read in
 // the same pass. Failures are one line naming the file, made here: CGAL's readers are called
 // quiet, since their own explanations go to std::cerr, which belongs to the whole process (the
 // Python module reads files on several threads at once).
@@ -12,14 +13,14 @@
 #ifndef CONSTRAINED_FAIRING_FRONT_END_MESH_FILE_H
 #define CONSTRAINED_FAIRING_FRONT_END_MESH_FILE_H
 
-#include <CGAL/IO/PLY/PLY_reader.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/iterator.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include "front_end/Ply_properties.h"
-#include "front_end/Polygon_soup_check.h"
+#include "front_end/Ply_reader.h"
 #include "front_end/Soup_repair.h"
 
 #include <algorithm>
@@ -109,51 +110,98 @@ struct Face_origin_visitor
   void after_subface_creations() {}
 };
 
+// The list of vertex indices of a PLY face element, as CGAL's soup reader takes it: the first
+// property "vertex_indices", else "vertex_index", that is a list of int or uint; `none` if there
+// is none.
+inline std::size_t ply_face_corners(const Ply_element_layout& element)
+{
+  for(const char* tag : {"vertex_indices", "vertex_index"})
+  {
+    const std::size_t k = element.index_of(tag);
+    if(k != Ply_element_layout::none && element.properties[k].is_list &&
+       (element.properties[k].type == "int" || element.properties[k].type == "uint"))
+      return k;
+  }
+  return Ply_element_layout::none;
+}
+
 // The face element of a PLY file: its polygons and the properties carried; false if it has no
 // list of vertex indices in a layout that CGAL's soup reader takes (the reason in `reason`).
-inline bool read_PLY_face_element(std::istream& stream, CGAL::IO::internal::PLY_element& element,
+inline bool read_PLY_face_element(std::istream& stream, Ply_format format, const Ply_element_layout& element,
                                   std::vector<std::vector<std::size_t> >& polygons, Ply_properties& properties,
                                   std::string& reason)
 {
-  namespace PLY = CGAL::IO::internal;
-  const char* tag = element.has_property<std::vector<std::int32_t> >("vertex_indices") ||
-                        element.has_property<std::vector<std::uint32_t> >("vertex_indices")
-                      ? "vertex_indices"
-                      : "vertex_index";
-  const bool is_signed = element.has_property<std::vector<std::int32_t> >(tag);
-  if(!is_signed && !element.has_property<std::vector<std::uint32_t> >(tag))
+  const std::size_t corners = ply_face_corners(element);
+  if(corners == Ply_element_layout::none)
   {
     reason = " (its faces have no list of vertex indices)";
     return false;
   }
-  Ply_carried_properties carried(element, {tag}, properties.dropped);
-  for(std::size_t j = 0; j < element.number_of_items(); ++j)
+  Ply_carried_properties carried(element, {element.properties[corners].name}, properties.dropped);
+  Ply_item item;
+  for(std::size_t j = 0; j < element.count; ++j)
   {
-    for(std::size_t k = 0; k < element.number_of_properties(); ++k)
-      element.property(k)->get(stream);
-    if(stream.fail())
+    if(!read_ply_item(stream, format, element, item))
     {
       reason = " (it ends before its face " + std::to_string(j) + ")";
       return false;
     }
-    std::vector<std::int64_t> indices;
-    if(is_signed)
-    {
-      std::vector<std::int32_t> read;
-      element.assign(read, tag);
-      indices.assign(read.begin(), read.end());
-    }
-    else
-    {
-      std::vector<std::uint32_t> read;
-      element.assign(read, tag);
-      indices.assign(read.begin(), read.end());
-    }
     // A negative index becomes one out of range, which the soup's check names.
-    polygons.emplace_back(indices.begin(), indices.end());
-    carried.read_item(element);
+    polygons.emplace_back();
+    for(double index : item.values[corners])
+      polygons.back().push_back(static_cast<std::size_t>(static_cast<std::int64_t>(index)));
+    carried.read_item(item);
   }
   properties.face = std::move(carried.properties);
+  return true;
+}
+
+// The vertex element of a PLY file: its points and the properties carried; false if its
+// coordinates are not float or double scalars (the reason in `reason`).
+template <typename Point>
+bool read_PLY_vertex_element(std::istream& stream, Ply_format format, const Ply_element_layout& element,
+                             std::vector<Point>& points, Ply_properties& properties, std::string& reason)
+{
+  std::size_t xyz[3];
+  for(int c = 0; c < 3; ++c)
+  {
+    const std::string coordinate(1, "xyz"[c]);
+    xyz[c] = element.index_of(coordinate);
+    const Ply_property_layout* p = xyz[c] == Ply_element_layout::none ? nullptr : &element.properties[xyz[c]];
+    if(p == nullptr || p->is_list || (p->type != "float" && p->type != "double"))
+    {
+      reason = " (its vertices have no float or double " + coordinate + ")";
+      return false;
+    }
+  }
+  Ply_carried_properties carried(element, {"x", "y", "z"}, properties.dropped);
+  Ply_item item;
+  for(std::size_t j = 0; j < element.count; ++j)
+  {
+    if(!read_ply_item(stream, format, element, item))
+    {
+      reason = " (it ends before its " + element.name + " " + std::to_string(j) + ")";
+      return false;
+    }
+    points.emplace_back(item.values[xyz[0]][0], item.values[xyz[1]][0], item.values[xyz[2]][0]);
+    carried.read_item(item);
+  }
+  properties.vertex = std::move(carried.properties);
+  return true;
+}
+
+// Another element of a PLY file, read through and named in `dropped`.
+inline bool skip_PLY_element(std::istream& stream, Ply_format format, const Ply_element_layout& element,
+                             std::vector<std::string>& dropped, std::string& reason)
+{
+  dropped.push_back("element " + element.name);
+  Ply_item item;
+  for(std::size_t j = 0; j < element.count; ++j)
+    if(!read_ply_item(stream, format, element, item))
+    {
+      reason = " (it ends before its " + element.name + " " + std::to_string(j) + ")";
+      return false;
+    }
   return true;
 }
 
@@ -161,58 +209,32 @@ inline bool read_PLY_face_element(std::istream& stream, CGAL::IO::internal::PLY_
 
 // Reads the PLY file `path` into `points` and `polygons` as read_polygon_soup_file() does, and
 // every scalar property of its vertices and faces into `properties` (Ply_properties.h), in the
-// same pass with CGAL's PLY parser; returns an empty string or the reason.
+// same pass (Ply_reader.h); returns an empty string or the reason.
 template <typename Point>
 std::string read_PLY_mesh_file(const std::string& path, std::vector<Point>& points,
                                std::vector<std::vector<std::size_t> >& polygons, Ply_properties& properties)
 {
-  namespace PLY = CGAL::IO::internal;
   const std::string cannot = "cannot read " + path + " as a PLY mesh";
   std::ifstream stream(path, std::ios::binary);
-  PLY::PLY_reader reader(false);
-  if(!stream || !reader.init(stream))
+  Ply_header header;
+  if(!stream || !read_ply_header(stream, header))
     return cannot + unreadable_file_reason(path);
   // CGAL's writer adds its own line to every header: it is not the user's.
-  properties.comments = reader.comments();
+  properties.comments = header.comments;
   const std::string own = "Generated by the CGAL library\n";
   for(std::size_t at; (at = properties.comments.find(own)) != std::string::npos;)
     properties.comments.erase(at, own.size());
-  for(std::size_t i = 0; i < reader.number_of_elements(); ++i)
+  for(const Ply_element_layout& element : header.elements)
   {
-    PLY::PLY_element& element = reader.element(i);
     std::string reason;
-    if(element.name() == "face" || element.name() == "faces")
-    {
-      if(!internal::read_PLY_face_element(stream, element, polygons, properties, reason))
-        return cannot + reason;
-      continue;
-    }
-    const bool vertex = element.name() == "vertex" || element.name() == "vertices";
-    // has_property<double> accepts float too, as assign(double&) reads both.
-    for(const char* coordinate : {"x", "y", "z"})
-      if(vertex && !element.has_property<double>(coordinate))
-        return cannot + " (its vertices have no float or double " + coordinate + ")";
-    std::vector<std::string> others;
-    Ply_carried_properties carried(element, {"x", "y", "z"}, vertex ? properties.dropped : others);
-    if(!vertex)
-      properties.dropped.push_back("element " + element.name());
-    for(std::size_t j = 0; j < element.number_of_items(); ++j)
-    {
-      for(std::size_t k = 0; k < element.number_of_properties(); ++k)
-        element.property(k)->get(stream);
-      if(stream.fail())
-        return cannot + " (it ends before its " + element.name() + " " + std::to_string(j) + ")";
-      if(!vertex)
-        continue;
-      double x = 0, y = 0, z = 0;
-      element.assign(x, "x");
-      element.assign(y, "y");
-      element.assign(z, "z");
-      points.emplace_back(x, y, z);
-      carried.read_item(element);
-    }
-    if(vertex)
-      properties.vertex = std::move(carried.properties);
+    const bool read =
+      element.name == "face" || element.name == "faces"
+        ? internal::read_PLY_face_element(stream, header.format, element, polygons, properties, reason)
+      : element.name == "vertex" || element.name == "vertices"
+        ? internal::read_PLY_vertex_element(stream, header.format, element, points, properties, reason)
+        : internal::skip_PLY_element(stream, header.format, element, properties.dropped, reason);
+    if(!read)
+      return cannot + reason;
   }
   return std::string();
 }
@@ -243,7 +265,7 @@ std::string make_triangle_mesh(const std::string& path, const std::vector<Point>
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using Defect = CGAL::Polygon_mesh_processing::Constrained_fairing_defect;
-  if(const Input_error soup = polygon_soup_error(points.size(), polygons))
+  if(const PMP::Constrained_fairing_input_error soup = PMP::constrained_fairing_polygon_soup_error(points.size(), polygons))
   {
     const bool repairable = soup.defect == Defect::NON_MANIFOLD_EDGE || soup.defect == Defect::NON_MANIFOLD_VERTEX ||
                             soup.defect == Defect::INCONSISTENT_ORIENTATION ||
@@ -304,7 +326,8 @@ std::string read_triangle_mesh_file(const std::string& path, bool properties, bo
   if(repair)
   {
     contents.repair.emplace();
-    if(const Input_error defect = repair_polygon_soup(points, polygons, *contents.repair))
+    if(const CGAL::Polygon_mesh_processing::Constrained_fairing_input_error defect =
+         repair_polygon_soup(points, polygons, *contents.repair))
       return path + ": " + defect.message;
     contents.vertex_origin = contents.repair->point_origin;
     polygon_origin = contents.repair->polygon_origin;

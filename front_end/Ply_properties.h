@@ -4,7 +4,7 @@
 // What a PLY file carries besides its positions and faces, carried from input to output by the
 // tool, the Python module and the batch: every scalar property of its vertices (colours, a
 // scanner's confidence, ...) and of its faces, each with its name and type, in the file's order.
-// They are read with CGAL's PLY parser in the same pass as the soup, and written by CGAL's
+// They are read in the same pass as the soup (Ply_reader.h), and written by CGAL's
 // Surface_mesh writer as property maps of the same C++ type ("v:<name>", "f:<name>"), which
 // it writes as PLY properties of that type, in the order they were added. What is not carried
 // (other elements, list properties) is named in `dropped`, for the front ends to say so.
@@ -12,9 +12,10 @@
 #ifndef CONSTRAINED_FAIRING_FRONT_END_PLY_PROPERTIES_H
 #define CONSTRAINED_FAIRING_FRONT_END_PLY_PROPERTIES_H
 
-#include <CGAL/IO/PLY/PLY_reader.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include "front_end/Ply_reader.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -47,60 +48,6 @@ struct Ply_properties
   }
 };
 
-// f(T(), name) for the C++ type T of the PLY type `type` (either spelling, "uchar" or
-// "uint8"), with the name CGAL's writer gives it; false for another type.
-template <typename F>
-bool with_ply_type(const std::string& type, const F& f)
-{
-  if(type == "char" || type == "int8")
-    f(std::int8_t(), "char");
-  else if(type == "uchar" || type == "uint8")
-    f(std::uint8_t(), "uchar");
-  else if(type == "short" || type == "int16")
-    f(std::int16_t(), "short");
-  else if(type == "ushort" || type == "uint16")
-    f(std::uint16_t(), "ushort");
-  else if(type == "int" || type == "int32")
-    f(std::int32_t(), "int");
-  else if(type == "uint" || type == "uint32")
-    f(std::uint32_t(), "uint");
-  else if(type == "float" || type == "float32")
-    f(float(), "float");
-  else if(type == "double" || type == "float64")
-    f(double(), "double");
-  else
-    return false;
-  return true;
-}
-
-namespace internal {
-
-// The type of a scalar property that CGAL's parser made, or an empty string for a list.
-inline std::string ply_scalar_type(CGAL::IO::internal::PLY_read_number* property)
-{
-  namespace PLY = CGAL::IO::internal;
-  std::string type;
-  for(const char* name : {"char", "uchar", "short", "ushort", "int", "uint", "float", "double"})
-    with_ply_type(name, [&](auto zero, const char* spelled) {
-      if(type.empty() && dynamic_cast<PLY::PLY_read_typed_number<decltype(zero)>*>(property) != nullptr)
-        type = spelled;
-    });
-  return type;
-}
-
-// The value last read by a scalar property of type `type`.
-inline double ply_scalar_value(CGAL::IO::internal::PLY_read_number* property, const std::string& type)
-{
-  namespace PLY = CGAL::IO::internal;
-  double value = 0;
-  with_ply_type(type, [&](auto zero, const char*) {
-    value = double(static_cast<PLY::PLY_read_typed_number<decltype(zero)>*>(property)->buffer());
-  });
-  return value;
-}
-
-} // namespace internal
-
 // The scalar properties of a PLY element that are carried (all but `skipped`, the positions or
 // the faces' indices), each with its index among the element's properties; its list properties
 // other than `skipped` named in `dropped`.
@@ -109,30 +56,29 @@ struct Ply_carried_properties
   std::vector<std::size_t> index;
   std::vector<Ply_property> properties;
 
-  Ply_carried_properties(CGAL::IO::internal::PLY_element& element, const std::vector<std::string>& skipped,
+  Ply_carried_properties(const Ply_element_layout& element, const std::vector<std::string>& skipped,
                          std::vector<std::string>& dropped)
   {
-    for(std::size_t k = 0; k < element.number_of_properties(); ++k)
+    for(std::size_t k = 0; k < element.properties.size(); ++k)
     {
-      const std::string& name = element.property(k)->name();
-      if(std::find(skipped.begin(), skipped.end(), name) != skipped.end())
+      const Ply_property_layout& property = element.properties[k];
+      if(std::find(skipped.begin(), skipped.end(), property.name) != skipped.end())
         continue;
-      const std::string type = internal::ply_scalar_type(element.property(k));
-      if(type.empty())
-        dropped.push_back(element.name() + " list property " + name);
+      if(property.is_list)
+        dropped.push_back(element.name + " list property " + property.name);
       else
       {
         index.push_back(k);
-        properties.push_back({name, type, {}});
+        properties.push_back({property.name, property.type, {}});
       }
     }
   }
 
   // Appends the values of the item just read.
-  void read_item(CGAL::IO::internal::PLY_element& element)
+  void read_item(const Ply_item& item)
   {
     for(std::size_t p = 0; p < index.size(); ++p)
-      properties[p].values.push_back(internal::ply_scalar_value(element.property(index[p]), properties[p].type));
+      properties[p].values.push_back(item.values[index[p]][0]);
   }
 };
 

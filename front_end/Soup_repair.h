@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 
 #include <algorithm>
@@ -72,25 +73,36 @@ std::vector<std::array<double, 3> > polygon_key(const std::vector<Point>& points
   return key;
 }
 
-} // namespace internal
-
-// Repairs the soup in place; returns the first index out of range as an error instead, before
-// anything is changed (CGAL's repair assumes the indices exist).
+// The defects the repair cannot mend, in the library's words: the first index out of range
+// (CGAL's repair assumes the indices exist), then the first point that is not finite (positions
+// are the keys of Soup_repair, and NaN is no key).
 template <typename Point>
-Input_error repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
-                                Soup_repair& repair)
+CGAL::Polygon_mesh_processing::internal::Constrained_fairing::Input_error
+unrepairable_error(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons)
 {
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  namespace CF = PMP::internal::Constrained_fairing;
+  namespace CF = CGAL::Polygon_mesh_processing::internal::Constrained_fairing;
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(std::size_t v : polygons[f])
       if(v >= points.size())
         return CF::missing_vertex_error(f, v, points.size());
-  // Positions are the keys below, and NaN is no key: the library names it.
   for(std::size_t v = 0; v < points.size(); ++v)
     if(!std::isfinite(double(points[v].x())) || !std::isfinite(double(points[v].y())) ||
        !std::isfinite(double(points[v].z())))
       return CF::non_finite_coordinate_error(v);
+  return {};
+}
+
+} // namespace internal
+
+// Repairs the soup in place; returns what it cannot mend as an error instead, before anything
+// is changed.
+template <typename Point>
+CGAL::Polygon_mesh_processing::Constrained_fairing_input_error
+repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, Soup_repair& repair)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(const auto error = internal::unrepairable_error(points, polygons))
+    return {error.defect, error.message};
   repair.input_points = points.size();
   repair.input_polygons = polygons.size();
   std::map<std::array<double, 3>, std::size_t> point_by_position;

@@ -2,12 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Every defect of the input contract, one by one: the call returns INVALID_INPUT with a message
-// naming the defect and the element, and leaves the mesh bit-identical. Isolated vertices are
-// allowed and do not move. A negative stopping threshold is a precondition.
+// naming the defect and the element, and leaves the mesh bit-identical; the public check of a
+// mesh (constrained_fairing_mesh_error()) names the same defect in the same words where the mesh
+// itself breaks the contract, and none where its values do. The public check of a polygon soup
+// names each defect that keeps a soup from becoming a mesh, in the words of the mesh's check,
+// and accepts exactly the soups that CGAL's is_polygon_soup_a_polygon_mesh() accepts. Isolated
+// vertices are allowed and do not move. A negative stopping threshold is a precondition.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <CGAL/exceptions.h>
 
@@ -15,6 +21,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
@@ -53,6 +60,10 @@ void check_rejected(const Mesh& m, PMP::Constrained_fairing_defect defect, const
   CHECK(r.number_of_iterations == 0);
   CHECK(test::identical(test::points(copy), test::points(m)));
   CHECK(same_connectivity(copy, m));
+  const PMP::Constrained_fairing_input_error own = PMP::constrained_fairing_mesh_error(m);
+  const bool of_the_mesh = defect <= PMP::Constrained_fairing_defect::MESH_TOO_LARGE;
+  CHECK(own.defect == (of_the_mesh ? defect : PMP::Constrained_fairing_defect::NONE));
+  CHECK(own.message == (of_the_mesh ? r.message : std::string()));
 }
 
 // The triangle (a, b, c) with three edges of its own, whose other sides are border: the faces
@@ -230,6 +241,41 @@ void check_threshold_precondition()
 #endif
 }
 
+// The soup `polygons` of `n` points: named `defect`, with `expected` in the message, or accepted,
+// as CGAL's own test of a soup says.
+void check_soup(std::size_t n, const std::vector<std::vector<std::size_t> >& polygons,
+                PMP::Constrained_fairing_defect defect, const std::string& expected)
+{
+  const PMP::Constrained_fairing_input_error error = PMP::constrained_fairing_polygon_soup_error(n, polygons);
+  std::cout << "  \"" << error.message << "\"" << std::endl;
+  CHECK(error.defect == defect);
+  CHECK(error.message.find(expected) != std::string::npos);
+  CHECK(bool(error) == (defect != PMP::Constrained_fairing_defect::NONE));
+  const bool indices_exist = defect != PMP::Constrained_fairing_defect::INVALID_FACE;
+  if(indices_exist)
+    CHECK(!error == PMP::is_polygon_soup_a_polygon_mesh(polygons));
+}
+
+void check_polygon_soups()
+{
+  using D = PMP::Constrained_fairing_defect;
+  check_soup(5, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4, 1}}, D::NONE, "");
+  check_soup(3, {{0, 1}}, D::INVALID_FACE, "face 0 has 2 vertices");
+  check_soup(3, {{0, 1, 2}, {0, 1, 3}}, D::INVALID_FACE, "face 1 refers to vertex 3, but there are 3 vertices");
+  check_soup(3, {{0, 1, 2}, {2, 1, 1}}, D::INVALID_FACE, "face 1 refers to vertex 1 twice");
+  check_soup(5, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}, D::NON_MANIFOLD_EDGE,
+             "the edge between vertices 0 and 1 has 3 faces (a non-manifold edge)");
+  check_soup(4, {{0, 1, 2}, {0, 1, 3}}, D::INCONSISTENT_ORIENTATION,
+             "faces 0 and 1 are oriented inconsistently: both run from vertex 0 to vertex 1");
+  check_soup(5, {{0, 1, 2}, {0, 3, 4}}, D::NON_MANIFOLD_VERTEX, "vertex 0 is non-manifold");
+  // The mesh of an accepted soup is the mesh that the call and the mesh's check accept.
+  const std::vector<Point> points{Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0.2), Point(0, 1, 0), Point(-1, 0.5, 0)};
+  const std::vector<std::vector<std::size_t> > polygons{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}};
+  Mesh m;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
+  CHECK(!PMP::constrained_fairing_mesh_error(m) && PMP::constrained_fairing(m, 0.1));
+}
+
 int main()
 {
   check_epsilon();
@@ -243,5 +289,6 @@ int main()
   check_no_area();
   check_isolated_vertices();
   check_threshold_precondition();
+  check_polygon_soups();
   return test::report("test_input_contract");
 }

@@ -14,6 +14,7 @@
 #include "tools/Tool_progress.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
+#include <CGAL/Polygon_mesh_processing/label_map_epsilon.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -147,7 +148,7 @@ inline int fair_label_map(const Tool_options& options, const std::string& in)
     return fail(error + "; nothing written");
   progress.phase("fairing " + std::to_string(nets.points.size()) + " points");
   const PMP::Constrained_fairing_result result = PMP::constrained_fairing_of_interfaces(
-    nets.points, nets.triangles, nets.face_labels, std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]),
+    nets.points, nets.triangles, nets.face_labels, PMP::label_map_epsilon(h),
     CFP::vertex_box_half_extents_map(
       CGAL::make_property_map(nets.half_extents),
       CFP::iteration_callback(std::ref(progress),

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The tool on a mesh file: where the result goes, the sizes the options give, the file read
-// (repaired with --repair), the library's call with what the user asked for and nothing else,
+// (repaired with --repair), the library's call with what the user asked for and nothing else
+// (every other setting at the library's default or rule),
 // the result written with what a PLY input carried, and the one-line report.
 
 #ifndef CONSTRAINED_FAIRING_TOOL_MESH_RUN_H
@@ -11,6 +12,7 @@
 #include "tools/Tool_options.h"
 #include "tools/Tool_progress.h"
 
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
@@ -167,28 +169,15 @@ inline std::string choose_epsilon(const Tool_options& options, const Sizes& size
   return std::string();
 }
 
-// The per-vertex and box parameters the user asked for; the others are not passed at all.
+// What the user asked for: the per-vertex maps, and the settings, where each one the user did
+// not set keeps the library's default or rule (Constrained_fairing_settings.h); the maps not
+// asked for are not passed at all.
 struct Asked
 {
   std::optional<Mesh::Property_map<vertex_descriptor, double> > tolerance;
   std::optional<Mesh::Property_map<vertex_descriptor, bool> > fixed;
-  std::optional<std::array<double, 3> > extents;
-  std::optional<double> feature_angle;
-  bool box = false;
+  PMP::Constrained_fairing_settings settings;
 };
-
-// The library's call with `np` and the bound asked for: a box of the given extents, the cube
-// of the tolerance, or the default ball.
-template <typename NamedParameters>
-PMP::Constrained_fairing_result fair_with_bound(Mesh& mesh, double epsilon, const Asked& asked,
-                                                const NamedParameters& np)
-{
-  if(asked.extents)
-    return PMP::constrained_fairing(mesh, epsilon, CFP::box_half_extents(*asked.extents, np));
-  if(asked.box)
-    return PMP::constrained_fairing(mesh, epsilon, CFP::deviation_bound(PMP::Deviation_bound::BOX, np));
-  return PMP::constrained_fairing(mesh, epsilon, np);
-}
 
 // next(np), with `value` added to `np` by add(value, np) if it is given: each parameter the user
 // did not ask for is not passed at all.
@@ -201,30 +190,35 @@ PMP::Constrained_fairing_result with_if_given(const std::optional<T>& value, con
   return next(np);
 }
 
-// The library's call with the per-vertex maps and the creases asked for, then the bound.
+// The library's call with the settings and the per-vertex maps asked for.
 template <typename NamedParameters>
 PMP::Constrained_fairing_result fair_asked(Mesh& mesh, double epsilon, const Asked& asked, const NamedParameters& np)
 {
-  const auto bound = [&](const auto& with) { return fair_with_bound(mesh, epsilon, asked, with); };
-  const auto creases = [&](const auto& with) {
-    return with_if_given(asked.feature_angle, [](double a, const auto& p) { return CFP::feature_angle(a, p); }, with,
-                         bound);
+  const auto call = [&](const auto& with) {
+    return PMP::constrained_fairing(mesh, epsilon, CFP::fairing_settings(asked.settings, with));
   };
   const auto fixed = [&](const auto& with) {
     return with_if_given(asked.fixed, [](const auto& map, const auto& p) { return p.vertex_is_constrained_map(map); },
-                         with, creases);
+                         with, call);
   };
   return with_if_given(asked.tolerance, [](const auto& map, const auto& p) { return CFP::vertex_tolerance_map(map, p); },
                        np, fixed);
 }
 
-// What the user asked for, as maps of the mesh; removed again by forget().
+// What the user asked for, the maps as maps of the mesh; removed again by forget().
 inline Asked ask(const Tool_options& options, const Sizes& sizes, Input& input)
 {
   Asked asked;
-  asked.box = options.box;
-  asked.feature_angle = sizes.feature_angle;
-  asked.extents = sizes.extents;
+  if(options.box)
+    asked.settings.set_deviation_bound(PMP::Deviation_bound::BOX);
+  if(sizes.extents)
+    asked.settings.set_box_half_extents(*sizes.extents);
+  if(sizes.feature_angle)
+    asked.settings.set("feature_angle", *sizes.feature_angle);
+  if(options.accurate)
+    asked.settings.set("objective", PMP::Constrained_fairing_objective::ACCURATE);
+  if(options.tangential_motion)
+    asked.settings.set("tangential_motion", true);
   Mesh& mesh = input.mesh;
   if(options.radius_property)
   {

@@ -91,10 +91,10 @@ using namespace Tool_mesh;
 
 // The report, one line. The bending energy is the paper's measure of fairness; the objective
 // minimized adds the barrier against slivers and, for --accurate, the fidelity term.
-std::string report_line(const Tool_options& options, const std::string& out, const Mesh& mesh, double epsilon,
-                        const std::string& eps_text, const PMP::Constrained_fairing_result& result)
+std::string report_line(const Tool_options& options, const Asked& asked, const std::string& out, const Mesh& mesh,
+                        double epsilon, const std::string& eps_text, const PMP::Constrained_fairing_result& result)
 {
-  const bool ply = FE::has_extension(out, ".ply"), box = options.box || options.extents;
+  const bool ply = FE::has_extension(out, ".ply"), box = asked.settings.is_box_bound(false);
   std::ostringstream line;
   line << options.positional[0] << " -> " << out << (ply ? " (with deviation and at_bound)" : "") << ": "
        << num_vertices(mesh) << " vertices; eps " << epsilon << " (" << eps_text << "), "
@@ -159,16 +159,10 @@ int fair_mesh_file(const Tool_options& options)
   auto deviation = mesh.add_property_map<vertex_descriptor, double>("v:deviation", 0.).first;
   auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
   progress.phase("checking and starting (" + std::to_string(num_vertices(mesh)) + " vertices)");
-  const bool box = options.box || options.extents;
   const PMP::Constrained_fairing_result result = fair_asked(
     mesh, epsilon, asked,
-    CFP::iteration_callback(
-      std::ref(progress),
-      CFP::tangential_motion(
-        options.tangential_motion || box || options.accurate,
-        CFP::fairing_objective(options.accurate ? PMP::Constrained_fairing_objective::ACCURATE
-                                                : PMP::Constrained_fairing_objective::FAIREST,
-                               CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound))))));
+    CFP::iteration_callback(std::ref(progress),
+                            CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound))));
   progress.done();
   if(!result)
     return fail(result.message + "; nothing written");
@@ -191,7 +185,7 @@ int fair_mesh_file(const Tool_options& options)
   if(!write_error.empty())
     return fail(write_error + "; nothing written");
   print_notes(options, out, input.contents);
-  std::cout << report_line(options, out, mesh, epsilon, eps_text, result) << "; " << std::setprecision(3)
+  std::cout << report_line(options, asked, out, mesh, epsilon, eps_text, result) << "; " << std::setprecision(3)
             << progress.seconds() << " s" << std::endl;
   return EXIT_SUCCESS;
 }

@@ -222,7 +222,7 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     report = None
     W = V.copy()
     if fair:
-        cap = float(np.linalg.norm(h)) if epsilon is None else epsilon
+        cap = _core.label_map_epsilon(h.tolist()) if epsilon is None else epsilon
         W, report = fair_interfaces(V, F, FL, cap, box_half_extents=H, objective=objective,
                                     max_iterations=max_iterations, progress=progress)
     if frame is not None:

@@ -9,9 +9,12 @@
 // The computation runs without the GIL; the GIL is taken back only to call the Python
 // progress callback and, every fifth of a second, to let Ctrl-C through.
 
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_settings.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
+#include <CGAL/Polygon_mesh_processing/label_map_epsilon.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
 
@@ -48,7 +51,6 @@
 namespace py = pybind11;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
-namespace CF = PMP::internal::Constrained_fairing;
 namespace FE = Constrained_fairing_front_end;
 
 namespace {
@@ -109,10 +111,11 @@ struct Array_map
   friend void put(const Array_map& map, Key v, const Value& value) { map.data[row_of(v)] = value; }
 };
 
-// Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the checks of
-// front_end/Polygon_soup_check.h; returns the first defect found, and leaves `mesh` empty then. The defects
-// a mesh can hold (an empty one, one without faces, ...) are left to constrained_fairing().
-CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces, Mesh& mesh)
+// Builds `mesh` from the arrays as a C++ program does from a polygon soup, after the library's
+// check of a soup (constrained_fairing_polygon_soup_error()); returns the first defect found, and
+// leaves `mesh` empty then. The defects a mesh can hold (an empty one, one without faces, ...) are
+// left to constrained_fairing().
+PMP::Constrained_fairing_input_error build_mesh(const Float_array& vertices, const Index_array& faces, Mesh& mesh)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0)), m = static_cast<std::size_t>(faces.shape(0));
   const std::int64_t* f = faces.data();
@@ -121,7 +124,7 @@ CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces
     std::vector<std::array<std::int64_t, 3> > given(m);
     for(std::size_t i = 0; i < m; ++i)
       std::copy(f + 3 * i, f + 3 * i + 3, given[i].begin());
-    if(CF::Input_error error = FE::polygon_soup_error(n, given))
+    if(PMP::Constrained_fairing_input_error error = PMP::constrained_fairing_polygon_soup_error(n, given))
       return error;
     for(std::size_t i = 0; i < m; ++i)
       for(std::size_t c = 0; c < 3; ++c)
@@ -138,18 +141,18 @@ CF::Input_error build_mesh(const Float_array& vertices, const Index_array& faces
 
 // `measure(mesh)` on the mesh of the arrays, as (value, defect, message): NaN and the first
 // defect of the arrays, or the value and no defect. The mesh is held to the contract of
-// constrained_fairing(), by its own check, as the measures are meant for its input.
+// constrained_fairing(), by the library's check of a mesh, as the measures are meant for its input.
 template <typename Measure>
 py::tuple measure_mesh(const Float_array& vertices, const Index_array& faces, const Measure& measure)
 {
-  CF::Input_error error;
+  PMP::Constrained_fairing_input_error error;
   double value = std::numeric_limits<double>::quiet_NaN();
   {
     py::gil_scoped_release release;
     Mesh mesh;
     error = build_mesh(vertices, faces, mesh);
     if(!error)
-      error = CF::mesh_error(mesh, get(boost::vertex_index, mesh));
+      error = PMP::constrained_fairing_mesh_error(mesh);
     if(!error)
       value = measure(mesh);
   }
@@ -202,8 +205,9 @@ private:
   std::unique_ptr<py::error_already_set> m_error;
 };
 
-// The options of a call as the user gave them: the named settings (Fairing_settings.h) the user
-// set, by their name in the table; each one unset keeps the library's default.
+// The options of a call as the user gave them: the named settings the user set, by their name
+// in the library's table (Constrained_fairing_settings), and the bound's shape if named; each one
+// unset keeps the library's default.
 struct Options
 {
   double epsilon = 0;
@@ -212,27 +216,39 @@ struct Options
   py::dict given;
 
   // The library's settings, its defaults where the user gave nothing; with the GIL held.
-  CF::Fairing_settings settings() const
+  PMP::Constrained_fairing_settings settings() const
   {
-    CF::Fairing_settings asked(method);
-    CF::for_each_named_setting(asked, [this](const char* name, const char*, auto, auto& field) {
+    PMP::Constrained_fairing_settings asked(method);
+    asked.for_each_named_setting([this](const char* name, const char*, auto& value) {
       if(given.contains(name))
-        field = given[name].template cast<std::decay_t<decltype(field)> >();
+        value = given[name].template cast<std::decay_t<decltype(value)> >();
     });
+    if(!bound.empty())
+      asked.set_deviation_bound(bound == "box" ? PMP::Deviation_bound::BOX : PMP::Deviation_bound::BALL);
     return asked;
   }
 };
 
-// The named parameters of a call with `settings`, before `np`.
-template <typename NamedParameters>
-auto with_settings(const CF::Fairing_settings& settings, const NamedParameters& np)
+// The outputs of a call, a row per vertex (or point), made with the GIL held and filled without
+// it; the report gives them when the call succeeded.
+struct Fairing_outputs
 {
-  return CGAL::Named_function_parameters<CF::Fairing_settings, CF::fairing_settings_t, NamedParameters>(settings, np);
-}
+  py::array_t<double> deviation;
+  Mask_array at_bound;
+  Float_array vertices;
+  double* deviation_data;
+  bool* at_bound_data;
+  double* vertex_data;
+
+  explicit Fairing_outputs(std::size_t n)
+    : deviation(static_cast<py::ssize_t>(n)), at_bound(static_cast<py::ssize_t>(n)),
+      vertices({static_cast<py::ssize_t>(n), py::ssize_t(3)}), deviation_data(deviation.mutable_data()),
+      at_bound_data(at_bound.mutable_data()), vertex_data(vertices.mutable_data())
+  {}
+};
 
 // The result as the Python layer reads it, with the output arrays when the call succeeded.
-py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_array& out,
-                   const py::array_t<double>& deviation, const Mask_array& at_bound)
+py::dict report_of(const PMP::Constrained_fairing_result& result, const Fairing_outputs& outputs)
 {
   py::dict report;
   report["status"] = result.status;
@@ -255,18 +271,148 @@ py::dict report_of(const PMP::Constrained_fairing_result& result, const Float_ar
   report["feature_edges"] = Index_array(std::vector<py::ssize_t>{0, 2});
   if(result)
   {
-    report["vertices"] = out;
-    report["deviation"] = deviation;
-    report["at_bound"] = at_bound;
+    report["vertices"] = outputs.vertices;
+    report["deviation"] = outputs.deviation;
+    report["at_bound"] = outputs.at_bound;
   }
   return report;
+}
+
+// The tolerances and the fixed vertices of a call, the user's or what the call without them
+// uses (epsilon for every vertex, none fixed): one compiled pipeline serves both, bit for bit.
+class Vertex_defaults
+{
+  std::vector<double> m_epsilons;
+  std::unique_ptr<bool[]> m_none_fixed;
+
+public:
+  const double* const tolerance;
+  const bool* const fixed;
+
+  Vertex_defaults(std::size_t n, double epsilon, const std::optional<Float_array>& given_tolerance,
+                  const std::optional<Mask_array>& given_fixed)
+    : m_epsilons(given_tolerance ? 0 : n, epsilon), m_none_fixed(given_fixed ? nullptr : new bool[n]()),
+      tolerance(given_tolerance ? given_tolerance->data() : m_epsilons.data()),
+      fixed(given_fixed ? given_fixed->data() : m_none_fixed.get())
+  {}
+};
+
+// The per-vertex named parameters of a call before `np` (the fixed vertices, the creases): the
+// tolerances, the outputs and the callback; `Key` the vertices' type.
+template <typename Key, typename NamedParameters>
+auto vertex_parameters(const Vertex_defaults& given, const Fairing_outputs& outputs, Python_callback& callback,
+                       const NamedParameters& np)
+{
+  return CFP::vertex_tolerance_map(
+    Row_map<double, 1, double, Key>{given.tolerance},
+    CFP::vertex_deviation_map(
+      Array_map<double, Key>{outputs.deviation_data},
+      CFP::vertex_at_bound_map(Array_map<bool, Key>{outputs.at_bound_data}, CFP::iteration_callback(std::ref(callback), np))));
+}
+
+// The box arrays the user gave, if any, beside the input points.
+struct Box_arrays
+{
+  const Float_array& vertices;
+  const std::optional<Float_array>& half_extents;
+  const std::optional<Float_array>& centers;
+
+  bool given() const { return half_extents || centers; }
+};
+
+// `fair_with` called with the settings and `np`, and the box maps if the library's rule says the
+// call bounds by boxes (Constrained_fairing_settings::is_box_bound()): the user's half-extents, or
+// the tolerance's cube (epsilon per axis), and centres, or the input points. A ball named with box
+// arrays takes the box pipeline too, where the library rejects it (BOX_WITH_BALL).
+template <typename Key, typename NamedParameters, typename Fair>
+PMP::Constrained_fairing_result fair_in_bound(const PMP::Constrained_fairing_settings& settings, double epsilon,
+                                              const Box_arrays& box, const NamedParameters& np, const Fair& fair_with)
+{
+  if(!settings.is_box_bound(box.given()))
+    return fair_with(CFP::fairing_settings(settings, np));
+  std::vector<double> cube;
+  if(!box.half_extents)
+    cube.assign(3 * static_cast<std::size_t>(box.vertices.shape(0)), epsilon);
+  const double* extents = box.half_extents ? box.half_extents->data() : cube.data();
+  const double* centers = box.centers ? box.centers->data() : box.vertices.data();
+  return fair_with(CFP::fairing_settings(
+    settings, CFP::vertex_box_half_extents_map(Row_map<std::array<double, 3>, 3, double, Key>{extents},
+                                               CFP::vertex_box_center_map(Row_map<Point, 3, double, Key>{centers}, np))));
+}
+
+// A result that rejects the input for `error`.
+PMP::Constrained_fairing_result rejected(const PMP::Constrained_fairing_input_error& error)
+{
+  PMP::Constrained_fairing_result result;
+  result.status = PMP::Constrained_fairing_status::INVALID_INPUT;
+  result.defect = error.defect;
+  result.message = error.message;
+  return result;
+}
+
+// The creases the user gives, each an edge (the Python layer checked; a pair that is not is left
+// out), as the edge map to which the call adds those it detects.
+Mesh::Property_map<Mesh::Edge_index, bool> given_creases(const std::optional<Index_array>& feature_edges, Mesh& mesh)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  auto crease_map = mesh.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
+  if(feature_edges)
+    for(py::ssize_t k = 0; k < feature_edges->shape(0); ++k)
+    {
+      const std::int64_t* e = feature_edges->data() + 2 * k;
+      if(e[0] < 0 || e[1] < 0 || std::size_t(e[0]) >= n || std::size_t(e[1]) >= n)
+        continue;
+      const auto h =
+        CGAL::halfedge(vertex_descriptor(Mesh::size_type(e[0])), vertex_descriptor(Mesh::size_type(e[1])), mesh);
+      if(h.second)
+        crease_map[CGAL::edge(h.first, mesh)] = true;
+    }
+  return crease_map;
+}
+
+// The creases the call used, each as (smaller, larger) vertex, sorted.
+std::vector<std::array<std::int64_t, 2> > used_creases(const Mesh& mesh,
+                                                       const Mesh::Property_map<Mesh::Edge_index, bool>& crease_map)
+{
+  std::vector<std::array<std::int64_t, 2> > creases;
+  for(auto e : mesh.edges())
+    if(crease_map[e])
+    {
+      const std::int64_t a = mesh.source(mesh.halfedge(e)).idx(), b = mesh.target(mesh.halfedge(e)).idx();
+      creases.push_back({(std::min)(a, b), (std::max)(a, b)});
+    }
+  std::sort(creases.begin(), creases.end());
+  return creases;
+}
+
+// The faces of the region the Python layer checked.
+std::vector<face_descriptor> region_faces_of(const std::optional<Index_array>& region)
+{
+  std::vector<face_descriptor> faces;
+  if(region)
+    for(py::ssize_t k = 0; k < region->shape(0); ++k)
+      faces.push_back(face_descriptor(static_cast<Mesh::size_type>(region->data()[k])));
+  return faces;
+}
+
+// The points of `mesh` into the rows of `out`.
+void copy_points(const Mesh& mesh, double* out)
+{
+  for(vertex_descriptor v : mesh.vertices())
+  {
+    const Point& q = mesh.point(v);
+    double* row = out + 3 * std::size_t(v.idx());
+    row[0] = q.x();
+    row[1] = q.y();
+    row[2] = q.z();
+  }
 }
 
 // constrained_fairing() on the arrays, which the Python layer has checked for shape (every
 // per-vertex array has a row per vertex, the region's faces are distinct and exist), with the
 // settings the user gave. Every per-vertex map is given, filled with what the call without it
-// would use where the user gave none (epsilon, no fixed vertex, the input positions as box
-// centres): the result is the same, bit for bit, with one compiled pipeline per bound shape.
+// would use where the user gave none (Vertex_defaults, fair_in_bound()): the result is the same,
+// bit for bit, with one compiled pipeline per bound shape.
 py::dict fair(const Float_array& vertices, const Index_array& faces, const Options& options,
               const std::optional<Float_array>& tolerance, const std::optional<Mask_array>& fixed,
               const std::optional<Float_array>& box_half_extents, const std::optional<Float_array>& box_centers,
@@ -274,110 +420,35 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
               py::object progress)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
-  std::vector<std::array<std::int64_t, 2> > creases; // those used, each as (smaller, larger)
-  const bool box_arrays = box_half_extents || box_centers;
-  const bool box = options.bound == "box" || (options.bound.empty() && box_arrays);
   Python_callback callback(std::move(progress));
-  py::array_t<double> deviation(static_cast<py::ssize_t>(n));
-  Mask_array at_bound(static_cast<py::ssize_t>(n));
-  Float_array out({static_cast<py::ssize_t>(n), py::ssize_t(3)});
-  double* deviation_data = deviation.mutable_data();
-  bool* at_bound_data = at_bound.mutable_data();
-  double* out_data = out.mutable_data();
-  const CF::Fairing_settings settings = options.settings();
+  const Fairing_outputs outputs(n);
+  const PMP::Constrained_fairing_settings settings = options.settings();
   PMP::Constrained_fairing_result result;
+  std::vector<std::array<std::int64_t, 2> > creases;
   {
     py::gil_scoped_release release;
-    std::vector<double> epsilons;
-    std::unique_ptr<bool[]> none_fixed;
-    const double* tolerance_data = tolerance ? tolerance->data() : nullptr;
-    if(!tolerance)
-    {
-      epsilons.assign(n, options.epsilon);
-      tolerance_data = epsilons.data();
-    }
-    if(!fixed)
-      none_fixed.reset(new bool[n]());
     Mesh mesh;
-    if(const CF::Input_error error = build_mesh(vertices, faces, mesh))
-    {
-      result.status = PMP::Constrained_fairing_status::INVALID_INPUT;
-      result.defect = error.defect;
-      result.message = error.message;
-    }
+    if(const PMP::Constrained_fairing_input_error error = build_mesh(vertices, faces, mesh))
+      result = rejected(error);
     else
     {
-      // The creases the user gives, each an edge (the Python layer checked; a pair that is not
-      // is left out), the detected ones added by the call.
-      auto crease_map = mesh.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
-      if(feature_edges)
-        for(py::ssize_t k = 0; k < feature_edges->shape(0); ++k)
-        {
-          const std::int64_t* e = feature_edges->data() + 2 * k;
-          if(e[0] < 0 || e[1] < 0 || std::size_t(e[0]) >= n || std::size_t(e[1]) >= n)
-            continue;
-          const auto h = CGAL::halfedge(vertex_descriptor(Mesh::size_type(e[0])),
-                                        vertex_descriptor(Mesh::size_type(e[1])), mesh);
-          if(h.second)
-            crease_map[CGAL::edge(h.first, mesh)] = true;
-        }
-      std::vector<face_descriptor> region_faces;
-      if(region)
-        for(py::ssize_t k = 0; k < region->shape(0); ++k)
-          region_faces.push_back(face_descriptor(static_cast<Mesh::size_type>(region->data()[k])));
-      const auto np = CFP::vertex_tolerance_map(
-        Row_map<double, 1>{tolerance_data},
-        CFP::vertex_deviation_map(
-          Array_map<double>{deviation_data},
-          CFP::vertex_at_bound_map(Array_map<bool>{at_bound_data},
-                                   CFP::iteration_callback(std::ref(callback),
-                                                           CGAL::parameters::vertex_is_constrained_map(
-                                                             Row_map<bool, 1, bool>{fixed ? fixed->data()
-                                                                                          : none_fixed.get()})
-                                                             .edge_is_constrained_map(crease_map)))));
-      const auto fair_with = [&](const auto& parameters) {
-        const auto all = with_settings(settings, parameters);
-        return region ? PMP::constrained_fairing(region_faces, mesh, options.epsilon, all)
-                      : PMP::constrained_fairing(mesh, options.epsilon, all);
-      };
-      // The box pipeline also serves the ball asked for with box arrays: the library then
-      // reports BOX_WITH_BALL.
-      if(box || box_arrays)
-      {
-        // Without half-extents, the box is the tolerance's cube, as epsilon per axis gives.
-        std::vector<double> cube;
-        if(!box_half_extents)
-          cube.assign(3 * n, options.epsilon);
-        const double* extents_data = box_half_extents ? box_half_extents->data() : cube.data();
-        result = fair_with(
-          CFP::deviation_bound(box ? PMP::Deviation_bound::BOX : PMP::Deviation_bound::BALL,
-                               CFP::vertex_box_half_extents_map(
-                                 Row_map<std::array<double, 3>, 3>{extents_data},
-                                 CFP::vertex_box_center_map(
-                                   Row_map<Point, 3>{box_centers ? box_centers->data() : vertices.data()}, np))));
-      }
-      else
-        result = fair_with(np);
-      for(vertex_descriptor v : mesh.vertices())
-      {
-        const Point& q = mesh.point(v);
-        double* row = out_data + 3 * std::size_t(v.idx());
-        row[0] = q.x();
-        row[1] = q.y();
-        row[2] = q.z();
-      }
-      for(auto e : mesh.edges())
-        if(crease_map[e])
-        {
-          const std::int64_t a = mesh.source(mesh.halfedge(e)).idx(), b = mesh.target(mesh.halfedge(e)).idx();
-          creases.push_back({(std::min)(a, b), (std::max)(a, b)});
-        }
-      std::sort(creases.begin(), creases.end());
+      const auto crease_map = given_creases(feature_edges, mesh);
+      const std::vector<face_descriptor> region_faces = region_faces_of(region);
+      const Vertex_defaults given(n, options.epsilon, tolerance, fixed);
+      const auto np = vertex_parameters<vertex_descriptor>(
+        given, outputs, callback,
+        CGAL::parameters::vertex_is_constrained_map(Row_map<bool, 1, bool>{given.fixed}).edge_is_constrained_map(crease_map));
+      result = fair_in_bound<vertex_descriptor>(
+        settings, options.epsilon, {vertices, box_half_extents, box_centers}, np, [&](const auto& all) {
+          return region ? PMP::constrained_fairing(region_faces, mesh, options.epsilon, all)
+                        : PMP::constrained_fairing(mesh, options.epsilon, all);
+        });
+      copy_points(mesh, outputs.vertex_data);
+      creases = used_creases(mesh, crease_map);
     }
   }
   callback.raise_pending();
-
-  py::dict report = report_of(result, out, deviation, at_bound);
+  py::dict report = report_of(result, outputs);
   if(result)
   {
     Index_array used({py::ssize_t(creases.size()), py::ssize_t(2)});
@@ -454,50 +525,30 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
 {
   using Key = std::size_t;
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
-  const bool box = options.bound == "box" || (options.bound.empty() && (box_half_extents || box_centers));
   Python_callback callback(std::move(progress));
-  py::array_t<double> deviation(static_cast<py::ssize_t>(n));
-  Mask_array at_bound(static_cast<py::ssize_t>(n));
-  Float_array out({static_cast<py::ssize_t>(n), py::ssize_t(3)});
-  double* out_data = out.mutable_data();
-  const CF::Fairing_settings settings = options.settings();
+  const Fairing_outputs outputs(n);
+  const PMP::Constrained_fairing_settings settings = options.settings();
   PMP::Constrained_fairing_result result;
   {
     py::gil_scoped_release release;
     Label_soup soup(vertices, faces, face_labels);
-    std::vector<double> epsilons(tolerance ? 0 : n, options.epsilon), cube(box_half_extents ? 0 : 3 * n, options.epsilon);
-    std::unique_ptr<bool[]> none_fixed(fixed ? nullptr : new bool[n]());
-    const auto np = CFP::vertex_tolerance_map(
-      Row_map<double, 1, double, Key>{tolerance ? tolerance->data() : epsilons.data()},
-      CFP::vertex_deviation_map(
-        Array_map<double, Key>{deviation.mutable_data()},
-        CFP::vertex_at_bound_map(
-          Array_map<bool, Key>{at_bound.mutable_data()},
-          CFP::iteration_callback(std::ref(callback), CGAL::parameters::vertex_is_constrained_map(Row_map<bool, 1, bool, Key>{
-                                                        fixed ? fixed->data() : none_fixed.get()})))));
-    const auto fair_with = [&](const auto& parameters) {
-      return PMP::constrained_fairing_of_interfaces(soup.points, soup.triangles, soup.labels, options.epsilon,
-                                                    with_settings(settings, parameters));
-    };
-    if(box)
-      result = fair_with(
-        CFP::deviation_bound(PMP::Deviation_bound::BOX,
-                             CFP::vertex_box_half_extents_map(
-                               Row_map<std::array<double, 3>, 3, double, Key>{box_half_extents ? box_half_extents->data()
-                                                                                                : cube.data()},
-                               CFP::vertex_box_center_map(
-                                 Row_map<Point, 3, double, Key>{box_centers ? box_centers->data() : vertices.data()}, np))));
-    else
-      result = fair_with(np);
+    const Vertex_defaults given(n, options.epsilon, tolerance, fixed);
+    const auto np = vertex_parameters<Key>(
+      given, outputs, callback, CGAL::parameters::vertex_is_constrained_map(Row_map<bool, 1, bool, Key>{given.fixed}));
+    result = fair_in_bound<Key>(settings, options.epsilon, {vertices, box_half_extents, box_centers}, np,
+                                [&](const auto& all) {
+                                  return PMP::constrained_fairing_of_interfaces(soup.points, soup.triangles,
+                                                                                soup.labels, options.epsilon, all);
+                                });
     for(std::size_t i = 0; i < n; ++i)
     {
-      out_data[3 * i] = soup.points[i].x();
-      out_data[3 * i + 1] = soup.points[i].y();
-      out_data[3 * i + 2] = soup.points[i].z();
+      outputs.vertex_data[3 * i] = soup.points[i].x();
+      outputs.vertex_data[3 * i + 1] = soup.points[i].y();
+      outputs.vertex_data[3 * i + 2] = soup.points[i].z();
     }
   }
   callback.raise_pending();
-  return report_of(result, out, deviation, at_bound);
+  return report_of(result, outputs);
 }
 
 // The arrays of a mesh: its points and its triangles.
@@ -681,7 +732,7 @@ void write_mesh_with_properties(const std::string& path, const Float_array& vert
   {
     py::gil_scoped_release release;
     Mesh mesh;
-    if(const CF::Input_error defect = build_mesh(vertices, faces, mesh))
+    if(const PMP::Constrained_fairing_input_error defect = build_mesh(vertices, faces, mesh))
       error = path + ": properties are written with a mesh, and this is not one: " + defect.message;
     else
     {
@@ -751,12 +802,9 @@ void set_max_threads(std::size_t threads)
 #endif
 }
 
-} // namespace
-
-PYBIND11_MODULE(_core, m)
+// The enums of the library.
+void bind_enums(py::module_& m)
 {
-  m.doc() = "The compiled part of cgal_constrained_fairing; call the functions of the package instead.";
-
   py::enum_<PMP::Constrained_fairing_status>(m, "Status")
     .value("CONVERGED", PMP::Constrained_fairing_status::CONVERGED)
     .value("ITERATION_LIMIT_REACHED", PMP::Constrained_fairing_status::ITERATION_LIMIT_REACHED)
@@ -793,49 +841,34 @@ PYBIND11_MODULE(_core, m)
   py::enum_<PMP::Constrained_fairing_objective>(m, "Objective")
     .value("FAIREST", PMP::Constrained_fairing_objective::FAIREST)
     .value("ACCURATE", PMP::Constrained_fairing_objective::ACCURATE);
+}
 
+// The options of a call, the library's table of named settings and its defaults, and the
+// tolerance's grammar.
+void bind_settings(py::module_& m)
+{
   py::class_<Options>(m, "Options")
     .def(py::init<>())
     .def_readwrite("epsilon", &Options::epsilon)
     .def_readwrite("bound", &Options::bound)
     .def_readwrite("method", &Options::method)
-    .def_readwrite("given", &Options::given)
-    .def("max_iterations", [](const Options& options) { return options.settings().options.max_iterations; });
-
-  m.def("fair", &fair, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("tolerance"),
-        py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("feature_edges"),
-        py::arg("progress"));
-  m.def(
-    "mean_edge_length",
-    [](const Float_array& vertices, const Index_array& faces) {
-      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return FE::mean_edge_length(mesh); });
-    },
-    py::arg("vertices"), py::arg("faces"));
-  m.def(
-    "estimate_noise_level",
-    [](const Float_array& vertices, const Index_array& faces) {
-      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return PMP::estimate_noise_level(mesh); });
-    },
-    py::arg("vertices"), py::arg("faces"));
+    .def_readwrite("given", &Options::given);
   m.def(
     "default_settings",
     [](PMP::Constrained_fairing_method method) {
-      CF::Fairing_settings defaults(method);
+      const PMP::Constrained_fairing_settings defaults(method);
       py::dict d;
-      CF::for_each_named_setting(defaults,
-                                 [&d](const char* name, const char*, auto, const auto& field) { d[name] = field; });
-      d["energy_decrease_window"] = defaults.options.window;
-      d["energy_remaining_fraction"] = defaults.options.remaining_fraction;
-      d["remaining_motion"] = defaults.options.remaining_motion;
+      defaults.for_each_named_setting([&d](const char* name, const char*, const auto& value) { d[name] = value; });
+      d["energy_decrease_window"] = defaults.energy_decrease_window();
+      d["energy_remaining_fraction"] = defaults.energy_remaining_fraction();
+      d["remaining_motion"] = defaults.remaining_motion();
       return d;
     },
     py::arg("method"));
   m.def("named_settings", [] {
-    CF::Fairing_settings settings;
     py::list table;
-    CF::for_each_named_setting(settings, [&table](const char* name, const char* parameter, auto, const auto&) {
-      table.append(py::make_tuple(name, parameter));
-    });
+    PMP::Constrained_fairing_settings().for_each_named_setting(
+      [&table](const char* name, const char* parameter, const auto&) { table.append(py::make_tuple(name, parameter)); });
     return table;
   });
   m.def(
@@ -851,7 +884,33 @@ PYBIND11_MODULE(_core, m)
     },
     py::arg("text"));
   m.attr("default_epsilon") = FE::default_epsilon_text;
+}
+
+// The fairing of a mesh and the measures of one.
+void bind_fairing(py::module_& m)
+{
+  m.def("fair", &fair, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("tolerance"),
+        py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("feature_edges"),
+        py::arg("progress"));
+  m.def(
+    "mean_edge_length",
+    [](const Float_array& vertices, const Index_array& faces) {
+      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return FE::mean_edge_length(mesh); });
+    },
+    py::arg("vertices"), py::arg("faces"));
+  m.def(
+    "estimate_noise_level",
+    [](const Float_array& vertices, const Index_array& faces) {
+      return measure_mesh(vertices, faces, [](const Mesh& mesh) { return PMP::estimate_noise_level(mesh); });
+    },
+    py::arg("vertices"), py::arg("faces"));
+}
+
+// Label maps: their surfaces, their fairing and the frame of their voxels.
+void bind_label_maps(py::module_& m)
+{
   m.attr("label_box_margin") = PMP::label_box_margin;
+  m.def("label_map_epsilon", &PMP::label_map_epsilon, py::arg("spacing"));
   m.def(
     "voxel_frame",
     [](const FE::Voxel_frame::Affine& affine) {
@@ -866,6 +925,11 @@ PYBIND11_MODULE(_core, m)
         py::arg("box_centers"), py::arg("progress"));
   m.def("label_surface", &label_surface, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),
         py::arg("label"));
+}
+
+// The files, read and written as the tool reads and writes them.
+void bind_files(py::module_& m)
+{
   m.def("read_mesh", &read_mesh, py::arg("path"));
   m.def("read_label_map_file", &read_label_map_file, py::arg("path"));
   m.def("write_mesh", &write_mesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
@@ -874,6 +938,18 @@ PYBIND11_MODULE(_core, m)
   m.def("read_mesh_with_properties", &read_mesh_with_properties, py::arg("path"), py::arg("repair"));
   m.def("write_mesh_with_properties", &write_mesh_with_properties, py::arg("path"), py::arg("vertices"),
         py::arg("faces"), py::arg("vertex_properties"), py::arg("face_properties"), py::arg("comments"));
+}
+
+} // namespace
+
+PYBIND11_MODULE(_core, m)
+{
+  m.doc() = "The compiled part of cgal_constrained_fairing; call the functions of the package instead.";
+  bind_enums(m);
+  bind_settings(m);
+  bind_fairing(m);
+  bind_label_maps(m);
+  bind_files(m);
   m.def("max_threads", &max_threads);
   m.def("set_max_threads", &set_max_threads, py::arg("threads"));
 #ifdef CGAL_LINKED_WITH_TBB

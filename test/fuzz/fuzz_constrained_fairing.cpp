@@ -8,9 +8,8 @@
 // successful one must give finite points within the bound exactly.
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-
-#include "front_end/Polygon_soup_check.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -163,9 +162,9 @@ bool is_readable(const std::string& path, const std::uint8_t* data, std::size_t 
     for(std::size_t i : polygon)
       if(i >= points.size())
         return false;
-  // The soup check of the command-line tool and the Python module guards CGAL's mesh builder:
-  // it must accept exactly the soups that CGAL's own test accepts.
-  const bool accepted = !Constrained_fairing_front_end::polygon_soup_error(points.size(), polygons);
+  // The soup check that the command-line tool and the Python module make guards CGAL's mesh
+  // builder: it must accept exactly the soups that CGAL's own test accepts.
+  const bool accepted = !PMP::constrained_fairing_polygon_soup_error(points.size(), polygons);
   require(accepted == PMP::is_polygon_soup_a_polygon_mesh(polygons),
           "the soup check agrees with is_polygon_soup_a_polygon_mesh()");
   return true;

@@ -38,10 +38,10 @@ void for_each_named_setting(Settings& settings, const F& f)
   f("feature_angle", "feature_angle", feature_angle, settings.feature_angle);
 }
 
-// The tag of an undocumented named parameter that gives all the settings at once, the method
-// included: the settings of the table that the other named parameters give override its fields
-// (fairing_method does not, as it would reset the others' defaults). A front end whose user sets
-// them by name at run time (the Python module) calls the public functions with it.
+// The tag of the named parameter fairing_settings() (Constrained_fairing_settings.h) that gives
+// all the settings at once, the method included: the settings of the table that the other named
+// parameters give override its fields (fairing_method does not, as it would reset the others'
+// defaults). The front ends, whose users set them at run time, call the public functions with it.
 enum fairing_settings_t { fairing_settings };
 
 } // namespace Constrained_fairing
