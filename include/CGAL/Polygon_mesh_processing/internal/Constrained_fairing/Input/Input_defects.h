@@ -4,7 +4,7 @@
 // The input contract's defects, each with the one function that makes its error and message:
 // every check names a defect through these, whether it checks a mesh (Mesh_check.h), a
 // multi-label surface (Interface_check.h), the values of a call (Value_check.h) or a polygon
-// soup before it becomes a mesh (the front ends' soup check), so that a defect reads the same
+// soup before it becomes a mesh (Polygon_soup_check.h), so that a defect reads the same
 // whichever path found it.
 // Vertices and faces are named by their position, from 0, in the user's order.
 
