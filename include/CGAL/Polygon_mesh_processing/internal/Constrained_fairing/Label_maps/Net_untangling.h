@@ -86,12 +86,121 @@ inline std::vector<std::vector<std::size_t> > triangles_meeting(const std::vecto
   return meeting;
 }
 
-// The points of the `crossing` triangles, one after the other, each moved to the position of a
-// grid over its box [low, high] that leaves the fewest crossings between its triangles and
-// those near; of those, the one whose triangles' smallest angle is largest, up to
-// untangling_needle_angle; of those, the nearest. Its present position competes too, so that
-// no move adds a crossing. Passes while some cross and some point moves; `crossing` is updated
-// and the moved points are marked in `moved`.
+// The triangles around point v.
+inline Iterator_range<std::vector<std::size_t>::const_iterator> star(const Rows_by_vertex<std::size_t>& triangles_at,
+                                                                    Index v)
+{
+  return make_range(triangles_at.begin(v), triangles_at.end(v));
+}
+
+// The search for one point's position in search_uncrossed_positions(): the position of a grid
+// over its box [low, high] that leaves the fewest crossings between its triangles and those
+// near; of those, the one whose triangles' smallest angle is largest, up to
+// untangling_needle_angle; of those, the nearest. Its present position competes too, so that no
+// move adds a crossing.
+class Uncrossed_position_search
+{
+public:
+  Uncrossed_position_search(Points& X, const std::vector<std::array<Index, 3> >& triangles,
+                            const Rows_by_vertex<std::size_t>& triangles_at)
+    : m_X(X), m_triangles(triangles), m_triangles_at(triangles_at),
+      m_needle_sine(std::sin(untangling_needle_angle * CGAL_PI / 180))
+  {
+  }
+
+  // Moves point v to its best position, judged against the triangles `near`; whether it moved.
+  bool move(Index v, const std::vector<std::size_t>& near, const Points& low, const Points& high)
+  {
+    const Eigen::Vector3d start = point(m_X, v);
+    // The triangles near without v, whose boxes stay as v moves.
+    m_still.clear();
+    for(std::size_t g : near)
+      if(m_triangles[g][0] != v && m_triangles[g][1] != v && m_triangles[g][2] != v)
+        m_still.emplace_back(g, box_of(g));
+    auto best = score(v, start, (std::numeric_limits<int>::max)());
+    Eigen::Vector3d best_position = start;
+    for(int i = 0; i <= untangling_grid; ++i)
+      for(int j = 0; j <= untangling_grid; ++j)
+        for(int l = 0; l <= untangling_grid; ++l)
+        {
+          const int steps[3] = {i, j, l};
+          for(int c = 0; c < 3; ++c)
+            m_X(v, c) = low(v, c) + (high(v, c) - low(v, c)) * steps[c] / untangling_grid;
+          const auto s = score(v, start, std::get<0>(best));
+          if(s < best)
+          {
+            best = s;
+            best_position = point(m_X, v);
+          }
+        }
+    point(m_X, v) = best_position;
+    return best_position != start;
+  }
+
+private:
+  Bbox_3 box_of(std::size_t f) const
+  {
+    Bbox_3 b;
+    for(Index v : m_triangles[f])
+      b += Bbox_3(m_X(v, 0), m_X(v, 1), m_X(v, 2), m_X(v, 0), m_X(v, 1), m_X(v, 2));
+    return b;
+  }
+
+  // Point v's present position: (crossings, minus the smallest sine up to the needle's, squared
+  // distance from `start`), the smaller the better; the count stops once over `limit`, where the
+  // position loses anyway. v's own triangles are boxed at each position.
+  std::tuple<int, double, double> score(Index v, const Eigen::Vector3d& start, int limit)
+  {
+    int count = 0;
+    double sine = m_needle_sine;
+    m_moving.clear();
+    for(std::size_t f : star(m_triangles_at, v))
+      m_moving.emplace_back(f, box_of(f));
+    for(std::size_t i = 0; i < m_moving.size(); ++i)
+    {
+      const std::size_t f = m_moving[i].first;
+      const Bbox_3& b = m_moving[i].second;
+      for(const auto& g : m_still)
+        if(do_overlap(b, g.second) && Triangle_crossings::cross(m_X, m_triangles[f], m_triangles[g.first]))
+          ++count;
+      for(std::size_t j = i + 1; j < m_moving.size(); ++j) // each pair of v's own triangles once
+        if(do_overlap(b, m_moving[j].second) &&
+           Triangle_crossings::cross(m_X, m_triangles[f], m_triangles[m_moving[j].first]))
+          ++count;
+      if(count > limit)
+        break;
+      sine = (std::min)(sine, smallest_angle_sine(m_X, m_triangles[f]));
+    }
+    return std::make_tuple(count, -sine, (point(m_X, v) - start).squaredNorm());
+  }
+
+  Points& m_X;
+  const std::vector<std::array<Index, 3> >& m_triangles;
+  const Rows_by_vertex<std::size_t>& m_triangles_at;
+  const double m_needle_sine;
+  std::vector<std::pair<std::size_t, Bbox_3> > m_still, m_moving;
+};
+
+// The triangles that may meet each of `points`' triangles as the points move in their boxes
+// (`reach`, the box of each triangle).
+inline std::vector<std::vector<std::size_t> > triangles_near(const std::vector<Index>& points,
+                                                             const Rows_by_vertex<std::size_t>& triangles_at,
+                                                             const std::vector<Bbox_3>& reach)
+{
+  std::vector<Bbox_3> regions;
+  for(Index v : points)
+  {
+    Bbox_3 region;
+    for(std::size_t f : star(triangles_at, v))
+      region += reach[f];
+    regions.push_back(region);
+  }
+  return triangles_meeting(reach, regions);
+}
+
+// The points of the `crossing` triangles, one after the other, each moved by an
+// Uncrossed_position_search within its box [low, high]. Passes while some cross and some point
+// moves; `crossing` is updated and the moved points are marked in `moved`.
 inline void search_uncrossed_positions(Points& X, const Points& low, const Points& high,
                                        const std::vector<std::array<Index, 3> >& triangles,
                                        const Triangle_crossings& crossings, std::vector<bool>& crossing,
@@ -100,24 +209,17 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
   const std::size_t n = static_cast<std::size_t>(X.rows()), m = triangles.size();
   if(std::find(crossing.begin(), crossing.end(), true) == crossing.end())
     return;
-  const double needle_sine = std::sin(untangling_needle_angle * CGAL_PI / 180);
   const Rows_by_vertex<std::size_t> triangles_at(n, [&](const auto& add) {
     for(std::size_t f = 0; f < m; ++f)
       for(Index v : triangles[f])
         add(v, f);
   });
-  const auto star = [&triangles_at](Index v) { return make_range(triangles_at.begin(v), triangles_at.end(v)); };
-  const auto box_of = [&](std::size_t f) {
-    Bbox_3 b;
-    for(Index v : triangles[f])
-      b += Bbox_3(X(v, 0), X(v, 1), X(v, 2), X(v, 0), X(v, 1), X(v, 2));
-    return b;
-  };
   // Where each triangle can be while its points move in their boxes (every point is in its own).
   std::vector<Bbox_3> reach(m);
   for(std::size_t f = 0; f < m; ++f)
     for(Index v : triangles[f])
       reach[f] += Bbox_3(low(v, 0), low(v, 1), low(v, 2), high(v, 0), high(v, 1), high(v, 2));
+  Uncrossed_position_search search(X, triangles, triangles_at);
   for(std::size_t pass = 0; pass < untangling_passes; ++pass)
   {
     std::vector<Index> points;
@@ -128,76 +230,18 @@ inline void search_uncrossed_positions(Points& X, const Points& low, const Point
     points.erase(std::unique(points.begin(), points.end()), points.end());
     if(points.empty())
       return;
-    // The triangles that may meet each point's as the points of the pass move: a move is judged
-    // against all of them, so that it never adds a crossing.
-    std::vector<Bbox_3> regions;
-    for(Index v : points)
-    {
-      Bbox_3 region;
-      for(std::size_t f : star(v))
-        region += reach[f];
-      regions.push_back(region);
-    }
-    const std::vector<std::vector<std::size_t> > near = triangles_meeting(reach, regions);
+    // A move is judged against all the triangles that may meet the point's as the points of the
+    // pass move, so that it never adds a crossing.
+    const std::vector<std::vector<std::size_t> > near = triangles_near(points, triangles_at, reach);
     bool any = false;
     for(std::size_t k = 0; k < points.size(); ++k)
-    {
-      const Index v = points[k];
-      const Eigen::Vector3d start = point(X, v);
-      // The triangles near without v, whose boxes stay as v moves; v's own, boxed at each position.
-      std::vector<std::pair<std::size_t, Bbox_3> > still, moving;
-      for(std::size_t g : near[k])
-        if(triangles[g][0] != v && triangles[g][1] != v && triangles[g][2] != v)
-          still.emplace_back(g, box_of(g));
-      // (crossings, minus the smallest sine up to the needle's, squared distance): the smaller the
-      // better; the count stops once over `limit`, where the position loses anyway.
-      const auto score = [&](int limit) {
-        int count = 0;
-        double sine = needle_sine;
-        moving.clear();
-        for(std::size_t f : star(v))
-          moving.emplace_back(f, box_of(f));
-        for(std::size_t i = 0; i < moving.size(); ++i)
-        {
-          const std::size_t f = moving[i].first;
-          const Bbox_3& b = moving[i].second;
-          for(const auto& g : still)
-            if(do_overlap(b, g.second) && Triangle_crossings::cross(X, triangles[f], triangles[g.first]))
-              ++count;
-          for(std::size_t j = i + 1; j < moving.size(); ++j) // each pair of v's own triangles once
-            if(do_overlap(b, moving[j].second) && Triangle_crossings::cross(X, triangles[f], triangles[moving[j].first]))
-              ++count;
-          if(count > limit)
-            break;
-          sine = (std::min)(sine, smallest_angle_sine(X, triangles[f]));
-        }
-        return std::make_tuple(count, -sine, (point(X, v) - start).squaredNorm());
-      };
-      auto best = score((std::numeric_limits<int>::max)());
-      Eigen::Vector3d best_position = start;
-      for(int i = 0; i <= untangling_grid; ++i)
-        for(int j = 0; j <= untangling_grid; ++j)
-          for(int l = 0; l <= untangling_grid; ++l)
-          {
-            const int steps[3] = {i, j, l};
-            for(int c = 0; c < 3; ++c)
-              X(v, c) = low(v, c) + (high(v, c) - low(v, c)) * steps[c] / untangling_grid;
-            const auto s = score(std::get<0>(best));
-            if(s < best)
-            {
-              best = s;
-              best_position = point(X, v);
-            }
-          }
-      point(X, v) = best_position;
-      if(best_position != start)
-        any = moved[v] = true;
-    }
+      if(search.move(points[k], near[k], low, high))
+        any = moved[points[k]] = true;
     if(!any)
       return;
     std::vector<bool> changed = crossing;
     for(Index v : points)
-      for(std::size_t f : star(v))
+      for(std::size_t f : star(triangles_at, v))
         changed[f] = true;
     crossing = crossings.find(X, changed);
   }
