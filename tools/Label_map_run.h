@@ -124,28 +124,28 @@ inline int fair_label_map(const Tool_options& options, const std::string& in)
   namespace FE = Constrained_fairing_front_end;
   std::string format;
   if(const std::string error = label_map_options_error(options, format); !error.empty())
-    return fail(error);
+    return report_error(error);
   const std::filesystem::path out =
     options.positional.size() > 1 ? std::filesystem::path(options.positional[1]) : default_label_output(in);
   // Checked before a long run rather than after it, and again once the labels are known.
   if(const std::string error = FE::output_folder_error(in, out, {}, options.force); !error.empty())
-    return fail(error + "; nothing written");
+    return report_error(error + "; nothing written");
   Tool_progress progress;
   progress.phase("reading " + in);
   FE::Label_map map;
   if(const std::string error = FE::read_label_map(in, map); !error.empty())
-    return fail(error);
+    return report_error(error);
   const FE::Voxel_frame frame(map.affine);
   if(!frame.error.empty())
-    return fail(in + ": " + frame.error);
+    return report_error(in + ": " + frame.error);
   const std::array<double, 3>& h = frame.spacing;
   progress.phase("surface nets");
   Label_nets nets;
   make_label_nets(map, h, nets);
   if(nets.triangles.empty())
-    return fail(in + ": the label map holds nothing but the background label 0; nothing written");
+    return report_error(in + ": the label map holds nothing but the background label 0; nothing written");
   if(const std::string error = FE::output_folder_error(in, out, nets.file_names(format), options.force); !error.empty())
-    return fail(error + "; nothing written");
+    return report_error(error + "; nothing written");
   progress.phase("fairing " + std::to_string(nets.points.size()) + " points");
   const PMP::Constrained_fairing_result result = PMP::constrained_fairing_of_interfaces(
     nets.points, nets.triangles, nets.face_labels, PMP::label_map_epsilon(h),
@@ -156,12 +156,12 @@ inline int fair_label_map(const Tool_options& options, const std::string& in)
                                                                       : PMP::Constrained_fairing_objective::FAIREST))));
   progress.done();
   if(!result)
-    return fail(result.message + "; nothing written");
+    return report_error(result.message + "; nothing written");
   progress.phase("writing " + out.string());
   const std::string write_error = write_label_surfaces(nets, frame, format, out);
   progress.done();
   if(!write_error.empty())
-    return fail(write_error + "; nothing written");
+    return report_error(write_error + "; nothing written");
   const std::size_t n = nets.labels.size();
   std::cout << in << " -> " << out.string() << "/: " << n << (n == 1 ? " label (" : " labels (") << map.size[0]
             << " x " << map.size[1] << " x " << map.size[2] << " voxels of " << h[0] << " x " << h[1] << " x " << h[2]

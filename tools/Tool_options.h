@@ -102,7 +102,7 @@ inline Tool_options parse_tool_options(int argc, char* argv[])
 }
 
 // The tool's one line on a failure.
-inline int fail(const std::string& message)
+inline int report_error(const std::string& message)
 {
   std::cerr << "error: " << message << std::endl;
   return EXIT_FAILURE;

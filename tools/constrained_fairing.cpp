@@ -140,18 +140,18 @@ int fair_mesh_file(const Tool_options& options)
   std::string out;
   Sizes sizes;
   if(const std::string error = output_path(options, out); !error.empty())
-    return fail(error);
+    return report_error(error);
   if(const std::string error = read_sizes(options, sizes); !error.empty())
-    return fail(error);
+    return report_error(error);
   Tool_progress progress;
   progress.phase("reading " + options.positional[0]);
   Input input;
   if(const std::string error = read_input(options, input); !error.empty())
-    return fail(error);
+    return report_error(error);
   double epsilon = 0;
   std::string eps_text;
   if(const std::string error = choose_epsilon(options, sizes, input, epsilon, eps_text); !error.empty())
-    return fail(error);
+    return report_error(error);
 
   // Only what the user asked for is passed: the plain call takes the library's own defaults.
   Mesh& mesh = input.mesh;
@@ -165,7 +165,7 @@ int fair_mesh_file(const Tool_options& options)
                             CFP::vertex_deviation_map(deviation, CFP::vertex_at_bound_map(at_bound))));
   progress.done();
   if(!result)
-    return fail(result.message + "; nothing written");
+    return report_error(result.message + "; nothing written");
 
   // The maps given to the library go; only a PLY output carries properties.
   forget(asked, mesh);
@@ -183,7 +183,7 @@ int fair_mesh_file(const Tool_options& options)
   const std::string write_error = write_output(out, mesh, input.contents.properties);
   progress.done();
   if(!write_error.empty())
-    return fail(write_error + "; nothing written");
+    return report_error(write_error + "; nothing written");
   print_notes(options, out, input.contents);
   std::cout << report_line(options, asked, out, mesh, epsilon, eps_text, result) << "; " << std::setprecision(3)
             << progress.seconds() << " s" << std::endl;
@@ -201,12 +201,12 @@ int main(int argc, char* argv[])
     return EXIT_SUCCESS;
   }
   if(!options.error.empty())
-    return fail(options.error);
+    return report_error(options.error);
   const std::string& in = options.positional[0];
   if(Constrained_fairing_front_end::is_label_map_file(in))
     return fair_label_map(options, in);
   if(options.label_format || options.force)
-    return fail(std::string(options.label_format ? "--label-format" : "--force") + " applies to a label map (" +
+    return report_error(std::string(options.label_format ? "--label-format" : "--force") + " applies to a label map (" +
                 Constrained_fairing_front_end::label_map_extensions + ") only");
   return fair_mesh_file(options);
 }
