@@ -150,7 +150,7 @@ std::set<std::array<CF::Index, 3> > folds_of(std::vector<Point> points,
                       std::vector<std::array<std::int64_t, 2> > >
     input(points, triangles, face_labels);
   CHECK(!input.structure_error());
-  const CF::Interface_part part = input.part(No_constraints());
+  const CF::Numbered_part part = input.part(No_constraints());
   const CF::Points X = input.input_points(part);
   std::vector<bool> moving(part.size());
   for(std::size_t k = 0; k < part.size(); ++k)

@@ -3,10 +3,11 @@
 //
 // The bending energy of an operator form (Operator_bending.h), the seam through which an input
 // without hinges brings its bending to the objective: with the cotangent Laplacian and
-// barycentric masses of a sphere it measures the sphere's integral of (2H)^2, 16 pi; it is
-// scale-invariant and blind to translations; its gradient agrees with central differences; and
-// an objective without hinges (Fairing_objective.h) made of it reports it as its bending
-// energy, with its Hessian's diagonal as the stiffness.
+// barycentric masses of a sphere it measures the sphere's integral of (2H)^2, 16 pi; one form
+// gives the same energy on the sphere scaled (its masses move with the points), and is blind to
+// translations; its gradient agrees with central differences, with a Laplacian that is not
+// symmetric too; and an objective without hinges (Fairing_objective.h) made of it reports it as
+// its bending energy, with its quadratic part's Hessian diagonal as the stiffness.
 
 #include "seeded_noise.h"
 #include "test_support.h"
@@ -32,12 +33,16 @@ CF::Points to_points(const Mesh& m, double scale = 1)
 }
 
 // The cotangent Laplacian (x_j - x_i weighted by half the cotangents opposite edge ij) and
-// each vertex's third of its triangles' areas, at X.
-CF::Operator_bending cotangent_form(const Mesh& m, const CF::Points& X)
+// each vertex's third of its triangles' areas and its normal, at X; `skew` scales the entries of the rows
+// of vertices of odd index, which makes L not symmetric; the curvature normals along the
+// normals, or whole.
+CF::Operator_bending cotangent_form(const Mesh& m, const CF::Points& X, double skew = 1, bool along_normals = true)
 {
   const Eigen::Index n = X.rows();
   std::vector<Eigen::Triplet<double> > entries;
-  Eigen::VectorXd masses = Eigen::VectorXd::Zero(n);
+  std::vector<CF::Mass_triangle> masses;
+  CF::Points normals = CF::Points::Zero(n, 3);
+  const auto row_scale = [skew](Eigen::Index i) { return i % 2 == 1 ? skew : 1.0; };
   for(auto f : faces(m))
   {
     std::array<Eigen::Index, 3> v;
@@ -45,22 +50,24 @@ CF::Operator_bending cotangent_form(const Mesh& m, const CF::Points& X)
     for(auto u : vertices_around_face(halfedge(f, m), m))
       v[std::size_t(k++)] = Eigen::Index(u.idx());
     const Eigen::Vector3d a = X.row(v[0]), b = X.row(v[1]), c = X.row(v[2]);
-    const double area = 0.5 * (b - a).cross(c - a).norm();
+    for(Eigen::Index u : v)
+      normals.row(u) += (b - a).cross(c - a).transpose();
     for(int i = 0; i < 3; ++i)
     {
       const Eigen::Index p = v[std::size_t(i)], q = v[std::size_t((i + 1) % 3)], o = v[std::size_t((i + 2) % 3)];
       const Eigen::Vector3d e1 = X.row(p) - X.row(o), e2 = X.row(q) - X.row(o);
       const double w = 0.5 * e1.dot(e2) / e1.cross(e2).norm();
-      entries.emplace_back(p, q, w);
-      entries.emplace_back(q, p, w);
-      entries.emplace_back(p, p, -w);
-      entries.emplace_back(q, q, -w);
-      masses[p] += area / 3;
+      entries.emplace_back(p, q, w * row_scale(p));
+      entries.emplace_back(q, p, w * row_scale(q));
+      entries.emplace_back(p, p, -w * row_scale(p));
+      entries.emplace_back(q, q, -w * row_scale(q));
+      masses.push_back({{CF::Index(v[0]), CF::Index(v[1]), CF::Index(v[2])}, CF::Index(p)});
     }
   }
   Eigen::SparseMatrix<double> L(n, n);
   L.setFromTriplets(entries.begin(), entries.end());
-  return CF::Operator_bending(std::move(L), std::move(masses));
+  normals.rowwise().normalize();
+  return CF::Operator_bending(std::move(L), along_normals ? std::move(normals) : CF::Points(), std::move(masses), X);
 }
 
 int main()
@@ -72,7 +79,9 @@ int main()
   std::cout << "  unit sphere: " << energy << " against 16 pi = " << 16 * CGAL_PI << std::endl;
   CHECK(std::abs(energy - 16 * CGAL_PI) <= 0.01 * 16 * CGAL_PI);
 
-  // Scale-invariant: the form of the sphere twice as large gives the same energy there.
+  // Scale-invariant: the form gives the same energy on the sphere twice as large, as does the
+  // form built there.
+  CHECK(std::abs(bending.value(to_points(sphere, 2)) - energy) <= 1e-12 * energy);
   CF::Operator_bending larger = cotangent_form(sphere, to_points(sphere, 2));
   CHECK(std::abs(larger.value(to_points(sphere, 2)) - energy) <= 1e-12 * energy);
   // Translations cost nothing: the rows of L sum to zero.
@@ -91,6 +100,18 @@ int main()
   const double error = test::gradient_error(Y, G, [&](const CF::Points& Z) { return form.value(Z); }, 1e-6);
   std::cout << "  gradient vs finite differences: relative error " << error << std::endl;
   CHECK(error < 1e-6);
+  CF::Operator_bending skewed = cotangent_form(noisy, Y, 1.7);
+  CF::Points S = CF::Points::Zero(Y.rows(), 3);
+  skewed.add_gradient(Y, S, nullptr);
+  const double skewed_error = test::gradient_error(Y, S, [&](const CF::Points& Z) { return skewed.value(Z); }, 1e-6);
+  std::cout << "  with a Laplacian not symmetric: relative error " << skewed_error << std::endl;
+  CHECK(skewed_error < 1e-6);
+  CF::Operator_bending whole = cotangent_form(noisy, Y, 1.7, false);
+  CF::Points W = CF::Points::Zero(Y.rows(), 3);
+  whole.add_gradient(Y, W, nullptr);
+  const double whole_error = test::gradient_error(Y, W, [&](const CF::Points& Z) { return whole.value(Z); }, 1e-6);
+  std::cout << "  of the whole vector: relative error " << whole_error << std::endl;
+  CHECK(whole_error < 1e-6 && whole.value(Y) > skewed.value(Y));
 
   CF::Fairing_objective objective;
   objective.add_term(form);
@@ -101,12 +122,16 @@ int main()
   CHECK(objective.value(Y) == value && objective.bending_energy(Y) == value);
   CHECK(objective.number_of_degenerate_hinges() == 0);
   CHECK((scales.stiffness.array() > 0).all() && std::isinf(scales.reach.minCoeff()));
-  // The stiffness is the Hessian's diagonal: the term is quadratic, so a unit step of one
-  // coordinate changes the energy by g + s / 2.
+  // The stiffness is the Hessian's diagonal along the normal of the quadratic part, with the
+  // masses at the input; the masses' motion changes the second difference of the whole along
+  // the normal (here nearly the point's direction from the centre) by far less than it.
   const double s = scales.stiffness[7];
-  CF::Points step = Y;
-  step(7, 0) += 1e-3;
-  const double expected = value + 1e-3 * G(7, 0) + 0.5 * s * 1e-6;
-  CHECK(std::abs(form.value(step) - expected) <= 1e-9 * value);
+  const Eigen::RowVector3d along = Y.row(7).normalized();
+  CF::Points ahead = Y, behind = Y;
+  ahead.row(7) += 1e-4 * along;
+  behind.row(7) -= 1e-4 * along;
+  const double curvature = (form.value(ahead) - 2 * value + form.value(behind)) / 1e-8;
+  std::cout << "  stiffness " << s << " against the second difference " << curvature << std::endl;
+  CHECK(curvature > 0.5 * s && curvature < 2 * s);
   return test::report("test_operator_bending");
 }

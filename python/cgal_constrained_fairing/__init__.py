@@ -27,13 +27,14 @@ from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length,
 from ._io import MeshProperties, read_mesh, write_mesh
 from ._label_map_files import read_label_map
 from ._labels import LABEL_BOX_MARGIN, LabelSurfaces, fair_interfaces, label_surfaces
+from ._points import PointsReport, fair_points
 from ._report import Report, Status
 
 __version__ = "0.1.0"
 
 __all__ = [
     "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "MeshProperties", "Report", "Status", "estimate_noise_level", "fair",
-    "fair_files", "fair_interfaces", "label_surfaces", "max_threads", "mean_edge_length",
+    "fair_files", "fair_interfaces", "fair_points", "PointsReport", "label_surfaces", "max_threads", "mean_edge_length",
     "read_label_map", "read_mesh", "set_max_threads", "write_mesh",
 ]
 

@@ -57,6 +57,18 @@ class Defect(str, enum.Enum):
     """An input position lies outside its box."""
     NO_AREA = "NO_AREA"
     """Every triangle has zero area."""
+    TOO_FEW_POINTS = "TOO_FEW_POINTS"
+    """A point set has no more points than ``neighbors``."""
+    INVALID_NUMBER_OF_NEIGHBORS = "INVALID_NUMBER_OF_NEIGHBORS"
+    """``neighbors`` is less than 3."""
+    DUPLICATE_POINTS = "DUPLICATE_POINTS"
+    """Two points of a point set coincide."""
+    INVALID_NORMAL = "INVALID_NORMAL"
+    """A given normal is zero, NaN or infinite."""
+    NO_SURFACE = "NO_SURFACE"
+    """The points of a point set are all on one line."""
+    METHOD_NEEDS_MESH = "METHOD_NEEDS_MESH"
+    """A point set was given a method other than the default quasi-Newton method."""
 
     def __str__(self) -> str:
         return self.value

@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_input_check.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
+#include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
 #include <CGAL/Polygon_mesh_processing/label_map_epsilon.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
@@ -551,6 +552,68 @@ py::dict fair_interfaces(const Float_array& vertices, const Index_array& faces, 
   return report_of(result, outputs);
 }
 
+// A point set of the arrays, each point with its normal, given or to be written.
+struct Point_set
+{
+  using Item = std::pair<Point, K::Vector_3>;
+  std::vector<Item> items;
+
+  Point_set(const Float_array& vertices, const std::optional<Float_array>& normals)
+  {
+    const double* p = vertices.data();
+    const double* n = normals ? normals->data() : nullptr;
+    for(py::ssize_t i = 0; i < vertices.shape(0); ++i, p += 3)
+      items.emplace_back(Point(p[0], p[1], p[2]), n ? K::Vector_3(n[3 * i], n[3 * i + 1], n[3 * i + 2]) : K::Vector_3());
+  }
+};
+
+// constrained_fairing_of_points() on the arrays, which the Python layer has checked for shape;
+// as fair(), every per-point map is given; the normals read if given, and written.
+py::dict fair_points(const Float_array& vertices, const std::optional<Float_array>& normals, std::size_t neighbors,
+                     const Options& options, const std::optional<Float_array>& tolerance,
+                     const std::optional<Mask_array>& fixed, const std::optional<Float_array>& box_half_extents,
+                     const std::optional<Float_array>& box_centers, py::object progress)
+{
+  using Key = std::size_t;
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
+  Python_callback callback(std::move(progress));
+  const Fairing_outputs outputs(n);
+  Float_array faired_normals({static_cast<py::ssize_t>(n), py::ssize_t(3)});
+  double* normal_data = faired_normals.mutable_data();
+  const PMP::Constrained_fairing_settings settings = options.settings();
+  PMP::Constrained_fairing_result result;
+  {
+    py::gil_scoped_release release;
+    Point_set set(vertices, normals);
+    const Vertex_defaults given(n, options.epsilon, tolerance, fixed);
+    const auto np = vertex_parameters<Key>(
+      given, outputs, callback,
+      CGAL::parameters::vertex_is_constrained_map(Row_map<bool, 1, bool, Key>{given.fixed})
+        .point_map(CGAL::First_of_pair_property_map<Point_set::Item>()));
+    result = fair_in_bound<Key>(settings, options.epsilon, {vertices, box_half_extents, box_centers}, np,
+                                [&](const auto& all) {
+                                  const auto with_k = CFP::number_of_neighbors(neighbors, all);
+                                  return normals ? PMP::constrained_fairing_of_points(
+                                                     set.items, options.epsilon,
+                                                     with_k.normal_map(CGAL::Second_of_pair_property_map<Point_set::Item>()))
+                                                 : PMP::constrained_fairing_of_points(set.items, options.epsilon, with_k);
+                                });
+    for(std::size_t i = 0; i < n; ++i)
+      for(int c = 0; c < 3; ++c)
+      {
+        outputs.vertex_data[3 * i + std::size_t(c)] = set.items[i].first[c];
+        normal_data[3 * i + std::size_t(c)] = normals ? set.items[i].second[c] : 0.;
+      }
+  }
+  callback.raise_pending();
+  py::dict report = report_of(result, outputs);
+  report["number_of_isolated_points"] = result.number_of_isolated_points;
+  if(result && normals)
+    report["normals"] = faired_normals;
+  return report;
+}
+
+
 // The arrays of a mesh: its points and its triangles.
 py::tuple mesh_arrays(const Mesh& mesh)
 {
@@ -833,7 +896,13 @@ void bind_enums(py::module_& m)
     .value("INVALID_TOLERANCE", D::INVALID_TOLERANCE)
     .value("INVALID_BOX_CENTER", D::INVALID_BOX_CENTER)
     .value("OUTSIDE_BOX", D::OUTSIDE_BOX)
-    .value("NO_AREA", D::NO_AREA);
+    .value("NO_AREA", D::NO_AREA)
+    .value("TOO_FEW_POINTS", D::TOO_FEW_POINTS)
+    .value("INVALID_NUMBER_OF_NEIGHBORS", D::INVALID_NUMBER_OF_NEIGHBORS)
+    .value("DUPLICATE_POINTS", D::DUPLICATE_POINTS)
+    .value("INVALID_NORMAL", D::INVALID_NORMAL)
+    .value("NO_SURFACE", D::NO_SURFACE)
+    .value("METHOD_NEEDS_MESH", D::METHOD_NEEDS_MESH);
   py::enum_<PMP::Constrained_fairing_method>(m, "Method")
     .value("QUASI_NEWTON", PMP::Constrained_fairing_method::QUASI_NEWTON)
     .value("ACTIVE_SET_NEWTON", PMP::Constrained_fairing_method::ACTIVE_SET_NEWTON)
@@ -925,6 +994,9 @@ void bind_label_maps(py::module_& m)
         py::arg("box_centers"), py::arg("progress"));
   m.def("label_surface", &label_surface, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),
         py::arg("label"));
+  m.def("fair_points", &fair_points, py::arg("vertices"), py::arg("normals"), py::arg("neighbors"), py::arg("options"),
+        py::arg("tolerance"), py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"),
+        py::arg("progress"));
 }
 
 // The files, read and written as the tool reads and writes them.

@@ -77,7 +77,20 @@ enum class Constrained_fairing_defect
   /// an input position lies outside its box
   OUTSIDE_BOX,
   /// every triangle has zero area
-  NO_AREA
+  NO_AREA,
+  /// a point set has no more points than `number_of_neighbors`
+  TOO_FEW_POINTS,
+  /// `number_of_neighbors` is less than 3
+  INVALID_NUMBER_OF_NEIGHBORS,
+  /// two points of a point set coincide
+  DUPLICATE_POINTS,
+  /// a given normal is zero, NaN or infinite
+  INVALID_NORMAL,
+  /// no point of a point set has neighbours around it in its tangent plane: the points are
+  /// all on one line
+  NO_SURFACE,
+  /// the method needs hinges, which a point set has not (the paper's methods)
+  METHOD_NEEDS_MESH
 };
 
 /// \ingroup PkgConstrainedFairingRef
@@ -133,6 +146,10 @@ struct Constrained_fairing_result
   /// the interior edges left out of the energy because one of their two triangles is
   /// degenerate (of nearly zero area) in the input
   std::size_t number_of_degenerate_edges = 0;
+  /// the points of a point set with no usable neighbourhood (outliers far from the others,
+  /// or whose neighbours are on a line), kept where they are; counted in
+  /// `number_of_fixed_vertices` too
+  std::size_t number_of_isolated_points = 0;
 
   /// `true` when the mesh holds a faired result
   explicit operator bool() const

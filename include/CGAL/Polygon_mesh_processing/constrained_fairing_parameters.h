@@ -76,6 +76,7 @@ enum fidelity_weight_t { fidelity_weight };
 enum sliver_barrier_weight_t { sliver_barrier_weight };
 enum tangential_motion_t { tangential_motion };
 enum feature_angle_t { feature_angle };
+enum number_of_neighbors_t { number_of_neighbors };
 
 } // namespace Constrained_fairing
 } // namespace internal
@@ -141,6 +142,9 @@ CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(tangential_motion)
 /// the dihedral angle in degrees, a `double` in (0, 180), over which edges are detected as
 /// creases, kept sharp
 CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(feature_angle)
+/// a point set's neighbours per point, for its normals and tangent fans, a `std::size_t` of at
+/// least 3 (`constrained_fairing_of_points()`)
+CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER(number_of_neighbors)
 #undef CGAL_PMP_CONSTRAINED_FAIRING_PARAMETER
 
 } // namespace constrained_fairing_parameters

@@ -21,7 +21,6 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Bounds/Bound_parameters.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_input.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_problem.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
@@ -103,14 +102,17 @@ void fair_within(Input& input, const Part& part, const std::vector<Index>& rank,
   const Hinge_mesh mesh = input.hinges(part, moving, X0, settings);
   result.number_of_feature_edges = input.number_of_feature_edges();
   const double sliver_threshold = input.sliver_threshold(settings);
-  Fairing_objective energy(mesh, X0, settings.sliver_barrier_weight, sliver_threshold);
+  // An input without hinges brings its bending energy as a term (Operator_bending.h).
+  Fairing_objective energy = Input::bends_by_hinges
+                               ? Fairing_objective(mesh, X0, settings.sliver_barrier_weight, sliver_threshold)
+                               : Fairing_objective();
   input.add_terms(energy, mesh, X0, settings);
   Points anchor;
   std::optional<Fidelity_term> fidelity;
   if(settings.is_accurate())
   {
     anchor = X0;
-    Fidelity_anchor(mesh).apply(bound, anchor);
+    input.denoise(mesh, bound, anchor);
     fidelity.emplace(settings.fidelity_weight, [&bound](std::size_t i) { return bound.size(i); }, anchor);
     energy.add_term(*fidelity);
   }

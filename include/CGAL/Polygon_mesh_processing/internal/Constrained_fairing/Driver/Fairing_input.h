@@ -10,10 +10,13 @@
 //    input_points(part) -> Points, on the part's numbering; triangles(part), the triangles of
 //    the part on that numbering, for the area check (Value_check.h);
 //  - order: order(part, rank), its own numbering moved to the solver's (rank[k], vertex k's);
-//  - build: hinges(part, moving, X0, settings) -> Hinge_mesh; number_of_feature_edges(), the
-//    creases it keeps; sliding_points(part) -> std::vector<bool>, the points with no surface
+//  - build: hinges(part, moving, X0, settings) -> Hinge_mesh; `bends_by_hinges`, a static
+//    constexpr bool: whether the bending energy is the hinges' (Bending_energy.h), or else one
+//    of the input's terms; number_of_feature_edges(), the creases it keeps; sliding_points(part) -> std::vector<bool>, the points with no surface
 //    normal (empty: none); sliver_threshold(settings); add_terms(objective, mesh, X0,
 //    settings), its own terms of the objective (Objective_terms.h), which it keeps alive;
+//    denoise(mesh, bound, X), the accurate objective's anchor: X, the input points, denoised
+//    within the bound;
 //  - after the descent: repair(mesh, bound, moving, X0, X, objective, settings, result);
 //  - write back: clear_outputs(maps), the per-vertex outputs of what does not take part;
 //    write_own_outputs(), what only this kind writes (a mesh's detected creases in the user's
@@ -78,14 +81,18 @@ template <typename I>
 using add_terms = decltype(a<I>().add_terms(a<Fairing_objective>(), a<const Hinge_mesh>(), a<const Points>(),
                                             a<const Fairing_settings>()));
 template <typename I>
-using repair = decltype(a<const I>().repair(a<const Hinge_mesh>(), a<const Ball_bound>(),
+using bends_by_hinges = decltype(bool(I::bends_by_hinges));
+template <typename I>
+using denoise = decltype(a<const I>().denoise(a<const Hinge_mesh>(), a<const Ball_bound>(), a<Points>()));
+template <typename I>
+using repair = decltype(a<I>().repair(a<const Hinge_mesh>(), a<const Ball_bound>(),
                                             a<const std::vector<bool> >(), a<const Points>(), a<Points>(),
                                             a<Fairing_objective>(), a<const Fairing_settings>(),
                                             a<Constrained_fairing_result>()));
 template <typename I, typename M>
 using clear_outputs = decltype(a<const I>().clear_outputs(a<const M>()));
 template <typename I>
-using write_own_outputs = decltype(a<const I>().write_own_outputs());
+using write_own_outputs = decltype(a<I>().write_own_outputs());
 
 } // namespace input_concept
 
@@ -104,6 +111,8 @@ constexpr bool check_fairing_input()
     static_assert(C::has<C::hinges, Input, Part>, "an Input has hinges(part, moving, X0, settings) -> Hinge_mesh");
     static_assert(C::has<C::sliding_points, Input, Part>, "an Input has sliding_points(part) -> std::vector<bool>");
   }
+  static_assert(C::has<C::bends_by_hinges, Input>, "an Input has a static constexpr bool bends_by_hinges");
+  static_assert(C::has<C::denoise, Input>, "an Input has denoise(mesh, bound, X)");
   static_assert(C::has<C::number_of_feature_edges, Input>, "an Input has number_of_feature_edges()");
   static_assert(C::has<C::sliver_threshold, Input>, "an Input has sliver_threshold(settings) -> double");
   static_assert(C::has<C::add_terms, Input>, "an Input has add_terms(objective, mesh, X0, settings)");

@@ -13,6 +13,7 @@
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -202,6 +203,40 @@ inline Input_error outside_box_error(std::size_t v)
 }
 
 inline Input_error no_area_error() { return {Defect::NO_AREA, "all triangles of the mesh have zero area"}; }
+
+inline Input_error too_few_points_error(std::size_t n, std::size_t k)
+{
+  return {Defect::TOO_FEW_POINTS, "the point set has " + std::to_string(n) + " points, not more than its " +
+                                    std::to_string(k) + " neighbours (number_of_neighbors)"};
+}
+
+inline Input_error invalid_number_of_neighbors_error(std::size_t k)
+{
+  return {Defect::INVALID_NUMBER_OF_NEIGHBORS,
+          "number_of_neighbors is " + std::to_string(k) + ", it must be at least 3"};
+}
+
+inline Input_error duplicate_points_error(std::size_t i, std::size_t j)
+{
+  return {Defect::DUPLICATE_POINTS, "points " + std::to_string((std::min)(i, j)) + " and " +
+                                      std::to_string((std::max)(i, j)) + " coincide"};
+}
+
+inline Input_error invalid_normal_error(std::size_t i)
+{
+  return {Defect::INVALID_NORMAL, "the normal of point " + std::to_string(i) + " is zero, NaN or infinite"};
+}
+
+inline Input_error no_surface_error()
+{
+  return {Defect::NO_SURFACE, "no point has neighbours around it in its tangent plane: the points are on one line"};
+}
+
+inline Input_error method_needs_mesh_error()
+{
+  return {Defect::METHOD_NEEDS_MESH,
+          "the paper's methods need a mesh's hinges; a point set is faired by QUASI_NEWTON (the default)"};
+}
 
 } // namespace Constrained_fairing
 } // namespace internal

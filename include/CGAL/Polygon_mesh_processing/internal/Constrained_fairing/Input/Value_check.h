@@ -27,7 +27,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// The parts (Mesh_part.h, Interface_part.h) give size(), number(k) (vertex k's number in
+// The parts (Mesh_part.h, Numbered_part.h) give size(), number(k) (vertex k's number in
 // messages), is_fixed(k), for_each_vertex(f), f(k, key) with the key of the per-vertex maps, and
 // `detects_creases`, whether `feature_angle` applies.
 

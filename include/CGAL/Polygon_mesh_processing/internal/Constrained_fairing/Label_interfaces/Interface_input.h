@@ -19,10 +19,11 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_INPUT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Crossing_repair.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_check.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Interface_part.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Numbered_part.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Junction_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Label_interfaces/Label_volumes.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Folded_triangles.h>
@@ -85,15 +86,15 @@ public:
 
   // The points that end or branch a junction line stay, and those the user fixed.
   template <typename VertexMaps>
-  Interface_part part(const VertexMaps& maps) const
+  Numbered_part part(const VertexMaps& maps) const
   {
     std::vector<bool> fixed = m_junctions->end;
     for(std::size_t k = 0; k < fixed.size(); ++k)
       fixed[k] = fixed[k] || maps.is_constrained(k);
-    return Interface_part(std::move(fixed));
+    return Numbered_part(std::move(fixed));
   }
 
-  Points input_points(const Interface_part& part) const
+  Points input_points(const Numbered_part& part) const
   {
     Points X0(static_cast<Eigen::Index>(part.size()), 3);
     for(std::size_t k = 0; k < part.size(); ++k)
@@ -102,9 +103,9 @@ public:
     return X0;
   }
 
-  const std::vector<std::array<Index, 3> >& triangles(const Interface_part&) const { return m_oriented; }
+  const std::vector<std::array<Index, 3> >& triangles(const Numbered_part&) const { return m_oriented; }
 
-  void order(const Interface_part&, const std::vector<Index>& rank)
+  void order(const Numbered_part&, const std::vector<Index>& rank)
   {
     for(auto& t : m_oriented)
       for(Index& v : t)
@@ -115,7 +116,7 @@ public:
   }
 
   // A hinge where exactly two triangles of one interface share an edge.
-  Hinge_mesh hinges(const Interface_part& part, const std::vector<bool>&, const Points&, const Fairing_settings&) const
+  Hinge_mesh hinges(const Numbered_part& part, const std::vector<bool>&, const Points&, const Fairing_settings&) const
   {
     std::vector<std::array<Index, 2> > hinge_faces;
     for(std::size_t i = 0, j = 0; i < m_sides.size(); i = j)
@@ -131,9 +132,18 @@ public:
   // Its junction lines are not creases.
   std::size_t number_of_feature_edges() const { return 0; }
 
+  static constexpr bool bends_by_hinges = true;
+
+  // The accurate objective's anchor: the normal filter, then a vertex fit (Fidelity_anchor.h).
+  template <typename Bound>
+  void denoise(const Hinge_mesh& mesh, const Bound& bound, Points& X) const
+  {
+    Fidelity_anchor(mesh).apply(bound, X);
+  }
+
   // The points of the junction lines, which have no surface normal: they slide freely in their
   // boxes where the others move along the normals (Normal_offsets.h).
-  std::vector<bool> sliding_points(const Interface_part& part) const
+  std::vector<bool> sliding_points(const Numbered_part& part) const
   {
     std::vector<bool> sliding(part.size(), false);
     for(const auto& line : m_junctions->inner)

@@ -9,7 +9,7 @@
 // and is mu when every vertex is its tolerance away from its anchor. Why: the bending energy is
 // scale-invariant and does not care where in its band the surface sits, so its minimum
 // flattens real detail up to the bound. The anchor is a denoised copy of the input (the
-// caller's choice; the driver, Fairing_driver.h, makes it with Fidelity_anchor.h), which keeps
+// input's choice, its denoise(): a mesh's is Fidelity_anchor.h, a point set's a jet fit), which keeps
 // the detail larger than the noise, while the bending energy removes what the filter leaves.
 // Every vertex counts alike, as in the bending energy, whose terms are per hinge, and as in
 // the noise of a scan, which is per point: weighted by vertex areas, the term held the vertices

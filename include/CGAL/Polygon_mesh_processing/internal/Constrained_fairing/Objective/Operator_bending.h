@@ -1,16 +1,28 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The bending energy of an input without hinges, from an operator form: a symmetric Laplacian
-// L with lumped masses M (a point set's, from its points' neighbourhoods),
+// The bending energy of an input without hinges, from an operator form: a Laplacian L, each
+// row a point's (a point set's, from its tangent fan, Point_sets/Tangent_fans.h), each point's
+// unit normal n_i, and its mass M_i(X), a third of the area at X of the triangles it owns,
 //
-//   E = sum over the coordinates c of X_c^T L M^-1 L X_c,
+//   E(X) = sum over the points i of (n_i . (L X)_i)^2 / M_i(X),
 //
-// the squared mean curvature normal L x / M integrated over the masses: zero on planes, and
-// dimensionless and scale-invariant when L is (cotangent weights) and M is an area, as the
-// hinges' energy (Bending_energy.h). Why an operator: an input without triangles has no hinge,
-// while a Laplacian with positive weights can be built from neighbours alone (Sharp and Crane,
-// "A Laplacian for nonmanifold triangle meshes", SGP 2020, for point clouds); with it, such an
+// the squared mean curvature (L x)_i / M_i along the normal, integrated over the masses; or,
+// without normals, of the whole vector, |(L X)_i|^2 / M_i(X). Why along the normal where the
+// points move along their normals: on a plane of normal n every x_j - x_i is orthogonal to n,
+// so the term vanishes whatever the weights, while the whole vector (L X)_i vanishes there only
+// where the points keep the tangential layout the weights were made for; a point moved along a
+// normal that is a little off would pay for its tangential shift, which does not change the
+// surface. Why the whole vector where the points slide: with 3 n unknowns, the n terms along
+// the normals vanish on wrinkled layouts far from any fair surface, while the whole vector
+// also holds each point in its neighbours' layout.
+// Why the masses move with X while L and the normals stay: with masses fixed at the input,
+// E(s X) = s^2 E(X), and a bounded minimizer would shrink every curved surface to the inner
+// side of its bound; with the areas at X it is scale-invariant, as the hinges' energy is
+// (Bending_energy.h), and only the noise costs. L need not be symmetric (a point's row is its
+// own neighbourhood's). Why an operator: an input without triangles has no hinge, while a
+// Laplacian with positive weights can be built from neighbours alone (Sharp and Crane, "A
+// Laplacian for nonmanifold triangle meshes", SGP 2020, for point clouds); with it, such an
 // input brings its bending as one more term of the objective (Objective_terms.h), and the
 // solvers, bounds and driver stay as they are.
 
@@ -25,43 +37,86 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <array>
+#include <cstddef>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
+// A triangle of the masses: its corners, and the point whose mass its area is a third of.
+struct Mass_triangle
+{
+  std::array<Index, 3> corners;
+  Index owner;
+};
+
 class Operator_bending final : public Objective_term
 {
 public:
   using Laplacian = Eigen::SparseMatrix<double>;
 
-  // `laplacian` symmetric, n x n; `masses` the n positive lumped masses.
-  Operator_bending(Laplacian laplacian, Eigen::VectorXd masses)
-    : m_L(std::move(laplacian)), m_inverse_mass(masses.cwiseInverse())
+  // `laplacian` n x n, its rows' entries summing to zero; `normals` the n unit normals, or none
+  // (0 rows) for the whole vector; every nonzero row's point owns a triangle of `masses` of
+  // positive area at X0.
+  Operator_bending(Laplacian laplacian, Points normals, std::vector<Mass_triangle> masses, const Points& X0)
+    : m_L(std::move(laplacian)), m_Lt(m_L.transpose()), m_normals(std::move(normals)), m_triangles(std::move(masses))
   {
-    CGAL_precondition(m_L.rows() == m_L.cols() && m_L.rows() == masses.size());
-    CGAL_precondition(masses.minCoeff() > 0);
+    CGAL_precondition(m_L.rows() == m_L.cols() && m_L.rows() == X0.rows() &&
+                      (m_normals.rows() == X0.rows() || m_normals.rows() == 0));
+    const Eigen::VectorXd M = masses_at(X0);
     m_stiffness = Eigen::VectorXd::Zero(m_L.rows());
     for(Eigen::Index j = 0; j < m_L.outerSize(); ++j)
       for(Laplacian::InnerIterator it(m_L, j); it; ++it)
-        m_stiffness[j] += 2 * it.value() * it.value() * m_inverse_mass[it.row()];
+      {
+        CGAL_precondition(M[it.row()] > 0);
+        m_stiffness[j] += 2 * it.value() * it.value() / M[it.row()];
+      }
   }
 
   double value(const Points& X) override
   {
-    m_LX = m_L * X;
-    return (m_LX.array().square().colwise() * m_inverse_mass.array()).sum();
+    m_curvature = m_L * X;
+    if(m_normals.rows() > 0)
+      m_curvature = m_normals.array().colwise() * (m_curvature.array() * m_normals.array()).rowwise().sum();
+    m_M = masses_at(X);
+    double sum = 0;
+    for(Eigen::Index i = 0; i < X.rows(); ++i)
+      if(m_M[i] != 0)
+        sum += point(m_curvature, i).squaredNorm() / m_M[i];
+    return sum;
   }
 
-  // The gradient 2 L M^-1 L X; the term is quadratic, its Hessian's diagonal 2 sum_j L_ji^2 / M_j
-  // in every direction.
+  // The gradient 2 L^T (c_i / M_i), c_i = (L X)_i or its part along n_i, less each mass's
+  // share: |c_i|^2 / M_i^2 times the gradient of a third of its triangles' areas.
   double add_gradient(const Points& X, Points& G, Stiffness_and_reach* scales) override
   {
     const double energy = value(X);
-    const Points scaled = m_inverse_mass.asDiagonal() * m_LX;
-    G += 2 * (m_L * scaled);
+    Points scaled = Points::Zero(X.rows(), 3);
+    Eigen::VectorXd share = Eigen::VectorXd::Zero(X.rows());
+    for(Eigen::Index i = 0; i < X.rows(); ++i)
+      if(m_M[i] != 0)
+      {
+        point(scaled, i) = point(m_curvature, i) / m_M[i];
+        share[i] = point(scaled, i).squaredNorm() / 3;
+      }
+    G += 2 * (m_Lt * scaled);
+    for(const Mass_triangle& t : m_triangles)
+    {
+      const Eigen::Vector3d a = point(X, t.corners[0]), b = point(X, t.corners[1]), c = point(X, t.corners[2]);
+      const Eigen::Vector3d normal = (b - a).cross(c - a);
+      const double length = normal.norm();
+      if(!(length > 0))
+        continue;
+      const Eigen::Vector3d unit = normal / length;
+      const double s = share[t.owner] / 2;
+      point(G, t.corners[0]) -= s * unit.cross(c - b);
+      point(G, t.corners[1]) -= s * unit.cross(a - c);
+      point(G, t.corners[2]) -= s * unit.cross(b - a);
+    }
     if(scales)
       scales->stiffness += m_stiffness;
     return energy;
@@ -70,10 +125,24 @@ public:
   bool is_bending() const override { return true; }
 
 private:
+  Eigen::VectorXd masses_at(const Points& X) const
+  {
+    Eigen::VectorXd M = Eigen::VectorXd::Zero(X.rows());
+    for(const Mass_triangle& t : m_triangles)
+    {
+      const Eigen::Vector3d a = point(X, t.corners[0]), b = point(X, t.corners[1]), c = point(X, t.corners[2]);
+      M[t.owner] += (b - a).cross(c - a).norm() / 6;
+    }
+    return M;
+  }
+
   Laplacian m_L;
-  Eigen::VectorXd m_inverse_mass;
-  Eigen::VectorXd m_stiffness; // the Hessian's diagonal, per coordinate
-  Points m_LX;
+  Laplacian m_Lt; // its transpose, for the gradient
+  Points m_normals;
+  std::vector<Mass_triangle> m_triangles;
+  Eigen::VectorXd m_stiffness; // a bound of the Hessian's diagonal of the quadratic part at X0
+  Points m_curvature; // (L X)_i or its part along n_i, at the last value()
+  Eigen::VectorXd m_M;
 };
 
 } // namespace Constrained_fairing

@@ -80,6 +80,8 @@ Fairing_settings read_fairing_settings(const NamedParameters& np)
     settings.deviation_bound = get_parameter(np, deviation_bound);
   if constexpr(is_given_parameter<NamedParameters, box_half_extents_t>)
     settings.box_half_extents = std::array<double, 3>(get_parameter(np, box_half_extents));
+  if constexpr(is_given_parameter<NamedParameters, number_of_neighbors_t>)
+    settings.number_of_neighbors = std::size_t(get_parameter(np, number_of_neighbors));
   settings.has_box_parameter = settings.box_half_extents.has_value() ||
                                is_given_parameter<NamedParameters, vertex_box_half_extents_map_t> ||
                                is_given_parameter<NamedParameters, vertex_box_center_map_t>;

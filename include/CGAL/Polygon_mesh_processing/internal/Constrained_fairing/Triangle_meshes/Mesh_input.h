@@ -12,6 +12,7 @@
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_MESH_INPUT_H
 
 #include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Input/Input_defects.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Curve_network.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
@@ -145,6 +146,15 @@ public:
   }
 
   std::size_t number_of_feature_edges() const { return m_feature_edges.size(); }
+
+  static constexpr bool bends_by_hinges = true;
+
+  // The accurate objective's anchor: the normal filter, then a vertex fit (Fidelity_anchor.h).
+  template <typename Bound>
+  void denoise(const Hinge_mesh& mesh, const Bound& bound, Points& X) const
+  {
+    Fidelity_anchor(mesh).apply(bound, X);
+  }
 
   // The points of the creases have no surface normal: they slide freely in their bounds where
   // the others move along the normals (Normal_offsets.h); none without creases, an empty list.

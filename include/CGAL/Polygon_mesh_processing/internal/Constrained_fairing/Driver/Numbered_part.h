@@ -1,11 +1,12 @@
 // Copyright (c) 2026  The CGAL Constrained Fairing authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The points of a multi-label surface as the driver, the value check and the bounds see them
-// (the counterpart of Mesh_part.h for a mesh).
+// The points of an input numbered 0 to n - 1, a multi-label surface's or a point set's, as the
+// driver, the value check and the bounds see them (the counterpart of Mesh_part.h for a mesh):
+// every point takes part, its number is the key of the per-point maps.
 
-#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H
-#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NUMBERED_PART_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NUMBERED_PART_H
 
 #include <cstddef>
 #include <utility>
@@ -17,14 +18,14 @@ namespace internal {
 namespace Constrained_fairing {
 
 // Point k is the key of the per-point maps and is named k in messages.
-class Interface_part
+class Numbered_part
 {
 public:
-  // No creases are detected: the junction lines are the surface's curves (`feature_angle` is
-  // rejected, Value_check.h).
+  // No creases are detected: a multi-label surface's curves are its junction lines, a point set
+  // has no edges (`feature_angle` is rejected, Value_check.h).
   static constexpr bool detects_creases = false;
 
-  explicit Interface_part(std::vector<bool> fixed) : m_fixed(std::move(fixed)) {}
+  explicit Numbered_part(std::vector<bool> fixed) : m_fixed(std::move(fixed)) {}
 
   std::size_t size() const { return m_fixed.size(); }
   bool is_fixed(std::size_t k) const { return m_fixed[k]; }
@@ -45,4 +46,4 @@ private:
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_INTERFACE_PART_H
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_NUMBERED_PART_H
