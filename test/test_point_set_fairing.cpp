@@ -204,8 +204,8 @@ void check_defects()
   std::vector<Point_with_normal> flat_normal = sphere;
   flat_normal[9].second = Vector(0, 0, 0);
   check_rejected(flat_normal, none, D::INVALID_NORMAL, "the normal of point 9 is zero, NaN or infinite");
-  check_rejected(std::vector<Point_with_normal>(sphere.begin(), sphere.begin() + 16), none, D::TOO_FEW_POINTS,
-                 "the point set has 16 points, not more than its 16 neighbours (number_of_neighbors)");
+  check_rejected(std::vector<Point_with_normal>(sphere.begin(), sphere.begin() + 32), none, D::TOO_FEW_POINTS,
+                 "the point set has 32 points, not more than its 32 neighbours (number_of_neighbors)");
   std::vector<Point_with_normal> twice = sphere;
   twice[150].first = twice[20].first;
   check_rejected(twice, none, D::DUPLICATE_POINTS, "points 20 and 150 coincide");

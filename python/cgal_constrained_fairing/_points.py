@@ -13,7 +13,7 @@ from ._arrays import invalid, numbers_array, selection_array, vertices_array
 from ._fairing import Progress, _Progress, call_options, result_of
 from ._report import Report
 
-DEFAULT_NEIGHBORS = 16
+DEFAULT_NEIGHBORS = 32
 """The C++ default of ``number_of_neighbors``."""
 
 

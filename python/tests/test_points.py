@@ -56,7 +56,7 @@ def test_bad_input_untouched():
     assert str(error.value).endswith("points 20 and 150 coincide")
     assert np.array_equal(P, before)
     with pytest.raises(cf.InputError) as error:
-        cf.fair_points(P[:16], EPS)
+        cf.fair_points(P[:32], EPS)
     assert error.value.defect == cf.Defect.TOO_FEW_POINTS
     with pytest.raises(cf.InputError) as error:
         cf.fair_points(P, EPS, N[:10])

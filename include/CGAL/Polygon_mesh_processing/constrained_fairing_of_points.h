@@ -77,7 +77,7 @@ is asked (`Constrained_fairing_defect::METHOD_NEEDS_MESH`), as on every other fa
     \cgalParamNBegin{number_of_neighbors}
       \cgalParamDescription{the neighbours of each point, for its normal and its tangent fan}
       \cgalParamType{`std::size_t`}
-      \cgalParamDefault{16}
+      \cgalParamDefault{32}
     \cgalParamNEnd
     \cgalParamNBegin{others}
       \cgalParamDescription{those of `constrained_fairing()` that apply to points:
