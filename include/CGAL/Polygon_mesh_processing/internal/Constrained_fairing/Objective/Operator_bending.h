@@ -35,6 +35,7 @@
 #include <CGAL/assertions.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 
 #include <array>

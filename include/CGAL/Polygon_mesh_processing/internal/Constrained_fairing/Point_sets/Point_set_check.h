@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Point_sets/Tangent_fans.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>

@@ -40,6 +40,7 @@
 
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <iterator>

@@ -28,6 +28,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cmath>
