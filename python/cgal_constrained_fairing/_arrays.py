@@ -136,3 +136,20 @@ def choice_argument(value, name, choices):
     if isinstance(value, str) and value.lower() in choices:
         return value.lower()
     raise invalid(f"{name} must be one of {', '.join(repr(c) for c in choices)} (got {value!r})")
+
+
+def bound_arrays(n, tolerance, fixed, box_half_extents, box_centers, item="vertex"):
+    """The per-point arrays of a call's bound, checked for `n` points (`item` names one in
+    messages): float64 tolerances ``(n,)``, the fixed points as a mask, box half-extents
+    ``(n, 3)`` (one triple for all broadcast), box centres ``(n, 3)``; each None if not given."""
+    if tolerance is not None:
+        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
+    if fixed is not None:
+        fixed = selection_array(fixed, "fixed", n, item)
+    if box_half_extents is not None:
+        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
+        if box_half_extents.shape == (3,):
+            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
+    if box_centers is not None:
+        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
+    return tolerance, fixed, box_half_extents, box_centers

@@ -12,8 +12,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
-from ._arrays import (_as_array, choice_argument, count_argument, faces_array, flag_argument,
-                      indices_array, invalid, number_argument, numbers_array, selection_array,
+from ._arrays import (_as_array, bound_arrays, choice_argument, count_argument, faces_array,
+                      flag_argument, indices_array, invalid, number_argument, selection_array,
                       vertices_array)
 from ._errors import Defect, InputError
 from ._report import Report, Status
@@ -191,16 +191,8 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
                            initial_smoothing_steps=initial_smoothing_steps,
                            conjugate_gradient_iterations=conjugate_gradient_iterations)
 
-    if tolerance is not None:
-        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
-    if fixed is not None:
-        fixed = selection_array(fixed, "fixed", n, "vertex")
-    if box_half_extents is not None:
-        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
-        if box_half_extents.shape == (3,):
-            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
-    if box_centers is not None:
-        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
+    tolerance, fixed, box_half_extents, box_centers = bound_arrays(n, tolerance, fixed, box_half_extents,
+                                                                   box_centers)
     if region is not None:
         region = _region_indices(region, F.shape[0])
     if feature_edges is not None:

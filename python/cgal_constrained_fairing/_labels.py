@@ -11,7 +11,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
-from ._arrays import invalid, numbers_array, selection_array, vertices_array
+from ._arrays import bound_arrays, invalid, numbers_array, vertices_array
 from ._errors import Defect, InputError
 from ._fairing import Progress, _Progress, call_options, result_of
 from ._report import Report
@@ -315,10 +315,8 @@ def fair_interfaces(vertices: ArrayLike, faces: ArrayLike, face_labels: ArrayLik
         raise invalid(f"face_labels must be an ({F.shape[0]}, 2) integer array "
                       f"(got shape {FL.shape}, dtype {FL.dtype})")
     FL = np.ascontiguousarray(FL, dtype=np.int64)
-    if box_half_extents is not None:
-        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
-        if box_half_extents.shape == (3,):
-            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
+    tolerance, fixed, box_half_extents, box_centers = bound_arrays(n, tolerance, fixed, box_half_extents,
+                                                                   box_centers)
     if epsilon is None:
         if box_half_extents is None:
             raise invalid("epsilon is needed without box_half_extents")
@@ -328,12 +326,6 @@ def fair_interfaces(vertices: ArrayLike, faces: ArrayLike, face_labels: ArrayLik
                            energy_decrease_threshold=energy_decrease_threshold,
                            max_iterations=max_iterations,
                            initial_smoothing_steps=initial_smoothing_steps)
-    if box_centers is not None:
-        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
-    if tolerance is not None:
-        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
-    if fixed is not None:
-        fixed = selection_array(fixed, "fixed", n, "vertex")
     with _Progress(progress, options) as callback:
         outcome = _core.fair_interfaces(V, F, FL, options, tolerance, fixed, box_half_extents,
                                         box_centers, callback)

@@ -9,7 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
-from ._arrays import invalid, numbers_array, selection_array, vertices_array
+from ._arrays import bound_arrays, count_argument, numbers_array, vertices_array
 from ._fairing import Progress, _Progress, call_options, result_of
 from ._report import Report
 
@@ -83,25 +83,16 @@ max_iterations, initial_smoothing_steps, tolerance, fixed, box_half_extents, box
     P = vertices_array(points)
     n = P.shape[0]
     N = None if normals is None else numbers_array(normals, "normals", [(n, 3)])
-    if isinstance(neighbors, bool) or not isinstance(neighbors, (int, np.integer)) or neighbors < 0:
-        raise invalid(f"neighbors must be a non-negative integer (got {neighbors!r})")
+    neighbors = count_argument(neighbors, "neighbors")
     options = call_options(epsilon, bound=bound, objective=objective,
                            fidelity_weight=fidelity_weight, tangential_motion=tangential_motion,
                            energy_decrease_threshold=energy_decrease_threshold,
                            max_iterations=max_iterations,
                            initial_smoothing_steps=initial_smoothing_steps)
-    if box_half_extents is not None:
-        box_half_extents = numbers_array(box_half_extents, "box_half_extents", [(3,), (n, 3)])
-        if box_half_extents.shape == (3,):
-            box_half_extents = np.ascontiguousarray(np.broadcast_to(box_half_extents, (n, 3)))
-    if box_centers is not None:
-        box_centers = numbers_array(box_centers, "box_centers", [(n, 3)])
-    if tolerance is not None:
-        tolerance = numbers_array(tolerance, "tolerance", [(n,)])
-    if fixed is not None:
-        fixed = selection_array(fixed, "fixed", n, "point")
+    tolerance, fixed, box_half_extents, box_centers = bound_arrays(n, tolerance, fixed, box_half_extents,
+                                                                   box_centers, "point")
     with _Progress(progress, options) as callback:
-        outcome = _core.fair_points(P, N, int(neighbors), options, tolerance, fixed, box_half_extents,
+        outcome = _core.fair_points(P, N, neighbors, options, tolerance, fixed, box_half_extents,
                                     box_centers, callback)
     Q, report = result_of(outcome)
     fields = dataclasses.asdict(report)
