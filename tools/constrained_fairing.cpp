@@ -14,6 +14,7 @@
 
 #include "tools/Label_map_run.h"
 #include "tools/Mesh_run.h"
+#include "tools/Point_set_run.h"
 #include "tools/Tool_options.h"
 #include "tools/Tool_progress.h"
 
@@ -37,6 +38,12 @@ input position (Hildebrandt and Polthier, SGP 2007).
         ...; normals recomputed), and gets each vertex's distance to its input position (vertex
         property "deviation") and whether it ended on its bound ("at_bound", 0 or 1). An OUT
         that is IN is refused unless --in-place is given
+
+  A point set IN (.xyz, .pwn with normals, or a .ply or .off without faces) is faired by
+  constrained_fairing_of_points(), every point kept in its order, into OUT of those formats
+  (default IN's name with _faired); a .ply carries IN's vertex properties, its normals (nx, ny,
+  nz) faired, and gets "deviation" and "at_bound". EPS must then be a distance; of the options,
+  only --accurate, --tangential-motion, --box and --in-place apply.
 
   A label map IN (a segmentation, one integer label per voxel, 0 the background: NIfTI-1 .nii
   or .nii.gz, INRIMAGE-4 .inr or .inr.gz as CGAL's Mesh_3 reads them, numpy's .npy) gives one
@@ -205,6 +212,8 @@ int main(int argc, char* argv[])
   const std::string& in = options.positional[0];
   if(Constrained_fairing_front_end::is_label_map_file(in))
     return fair_label_map(options, in);
+  if(Constrained_fairing_front_end::is_point_set_file(in))
+    return Tool_point_set::fair_point_set_file(options);
   if(options.label_format || options.force)
     return report_error(std::string(options.label_format ? "--label-format" : "--force") + " applies to a label map (" +
                 Constrained_fairing_front_end::label_map_extensions + ") only");

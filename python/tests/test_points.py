@@ -1,6 +1,9 @@
 """`fair_points` on numpy arrays: the bound in double, every point kept in its order, the
 normals at the result, the isolated points, bad input rejected with the arrays untouched."""
 
+import os
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -64,3 +67,59 @@ def test_bad_input_untouched():
     with pytest.raises(cf.InputError) as error:
         cf.fair_points(P, EPS, neighbors=2)
     assert error.value.defect == cf.Defect.INVALID_NUMBER_OF_NEIGHBORS
+
+
+TOOL = os.environ.get("CONSTRAINED_FAIRING_TOOL")
+needs_tool = pytest.mark.skipif(TOOL is None, reason="CONSTRAINED_FAIRING_TOOL names no built tool")
+
+
+def run_tool(*arguments):
+    return subprocess.run([TOOL, *map(str, arguments)], capture_output=True, text=True, timeout=300)
+
+
+@needs_tool
+def test_tool_gives_python_result(tmp_path):
+    """An .xyz file through the tool: Python's points, bit for bit, in their order."""
+    P, _ = noisy_sphere(2000, 4)
+    np.savetxt(tmp_path / "scan.xyz", P, fmt="%.17g")
+    done = run_tool("--eps", EPS, tmp_path / "scan.xyz", tmp_path / "out.xyz")
+    assert done.returncode == 0, done.stderr
+    Q, _ = cf.fair_points(P, EPS)
+    assert np.array_equal(np.loadtxt(tmp_path / "out.xyz"), Q)
+
+
+@needs_tool
+def test_tool_carries_ply_properties(tmp_path):
+    """A PLY point set's properties come out in their order and count, its normals faired."""
+    P, N = noisy_sphere(2000, 5)
+    confidence = np.linspace(0, 1, len(P))
+    with open(tmp_path / "scan.ply", "w") as f:
+        f.write("ply\nformat ascii 1.0\ncomment scanner 7\nelement vertex %d\n" % len(P)
+                + "".join(f"property double {c}\n" for c in ("x", "y", "z", "nx", "ny", "nz"))
+                + "property uchar red\nproperty double confidence\nend_header\n")
+        for p, n, c in zip(P, N, confidence):
+            f.write("%.17g %.17g %.17g %.17g %.17g %.17g 7 %.17g\n" % (*p, *n, c))
+    done = run_tool("--eps", EPS, tmp_path / "scan.ply", tmp_path / "out.ply")
+    assert done.returncode == 0, done.stderr
+    Q, report = cf.fair_points(P, EPS, N)
+    text = (tmp_path / "out.ply").read_bytes()
+    assert b"comment scanner 7" in text and b"property uchar red" in text
+    header, body = text.split(b"end_header\n", 1)
+    names = [line.split()[-1].decode() for line in header.splitlines() if line.startswith(b"property")]
+    assert names[:10] == ["x", "y", "z", "nx", "ny", "nz", "red", "confidence", "deviation", "at_bound"]
+    record = np.dtype([(c, "<f8") for c in ("x", "y", "z", "nx", "ny", "nz")]
+                      + [("red", "u1"), ("confidence", "<f8"), ("deviation", "<f8"), ("at_bound", "u1")])
+    out = np.frombuffer(body[:record.itemsize * len(P)], dtype=record)
+    assert np.array_equal(np.column_stack([out["x"], out["y"], out["z"]]), Q)
+    assert np.array_equal(np.column_stack([out["nx"], out["ny"], out["nz"]]), report.normals)
+    assert (out["red"] == 7).all() and np.array_equal(out["confidence"], confidence)
+    assert np.array_equal(out["deviation"], report.deviation)
+
+
+@needs_tool
+def test_tool_refuses_relative_eps(tmp_path):
+    P, _ = noisy_sphere(200, 6)
+    np.savetxt(tmp_path / "scan.xyz", P, fmt="%.17g")
+    done = run_tool("--eps", "0.25h", tmp_path / "scan.xyz", tmp_path / "out.xyz")
+    assert done.returncode == 1 and "needs --eps as a distance" in done.stderr
+    assert not (tmp_path / "out.xyz").exists()
