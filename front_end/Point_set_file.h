@@ -32,7 +32,7 @@ namespace Constrained_fairing_front_end {
 inline const std::string point_set_extensions = ".xyz, .pwn, or .ply and .off without faces";
 
 // Whether `path` holds a point set: an .xyz or .pwn file, or a .ply or .off file whose header
-// declares no face.
+// declares points and no face (a file of neither is a mesh's, refused as empty).
 inline bool is_point_set_file(const std::string& path)
 {
   if(has_extension(path, ".xyz") || has_extension(path, ".pwn"))
@@ -45,10 +45,14 @@ inline bool is_point_set_file(const std::string& path)
     Ply_header header;
     if(!read_ply_header(stream, header))
       return false;
+    bool points = false;
     for(const Ply_element_layout& element : header.elements)
+    {
       if((element.name == "face" || element.name == "faces") && element.count > 0)
         return false;
-    return true;
+      points = points || ((element.name == "vertex" || element.name == "vertices") && element.count > 0);
+    }
+    return points;
   }
   if(!has_extension(path, ".off"))
     return false;
@@ -67,7 +71,7 @@ inline bool is_point_set_file(const std::string& path)
         counts.push_back(count);
       }
   }
-  return counts.size() == 2 && counts[1] == 0;
+  return counts.size() == 2 && counts[0] > 0 && counts[1] == 0;
 }
 
 template <typename Point, typename Vector>
