@@ -8,7 +8,8 @@
 // results are clamped into the same balls. The peers' parameters are tuned on the first mesh,
 // held out, for each noise level, then frozen for the others. Figures, relative to sigma: the
 // RMS distance from the result's points to the clean mesh, and the coverage, the RMS distance
-// from an independent clean sample to the nearest result point.
+// from an independent clean sample to the nearest result point; and the noise estimate
+// (estimate_noise_level_of_points()) over sigma.
 //
 //   point_set_fairing [--points N] [--neighbors K] HELD_OUT.off MESH.off...
 //
@@ -17,6 +18,7 @@
 #include "benchmark_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
+#include <CGAL/Polygon_mesh_processing/estimate_noise_level_of_points.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -258,7 +260,8 @@ int main(int argc, char** argv)
                     fn = measure(shape, noisy, truth, sigma);
       std::cout << std::setw(16) << shape.name << (s == 0 ? "*" : " ") << std::fixed << std::setprecision(3) << "| "
                 << fj.distance << " " << fb.distance << " " << ff.distance << " " << fa.distance << " | " << fj.coverage
-                << " " << fb.coverage << " " << ff.coverage << " " << fa.coverage << " | " << fn.distance << "  ("
+                << " " << fb.coverage << " " << ff.coverage << " " << fa.coverage << " | " << fn.distance << " | "
+                << PMP::estimate_noise_level_of_points(noisy) / sigma << "  ("
                 << std::setprecision(1) << seconds << " s)" << std::endl;
       if(s > 0)
         rows.push_back({fj.distance, fb.distance, ff.distance, fa.distance, fj.coverage, fb.coverage, ff.coverage, fa.coverage});

@@ -11,6 +11,7 @@
 #include "tools/Tool_progress.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
+#include <CGAL/Polygon_mesh_processing/estimate_noise_level_of_points.h>
 
 #include "front_end/Epsilon_grammar.h"
 #include "front_end/Output_files.h"
@@ -41,17 +42,18 @@ inline bool point_set_format(const std::string& path)
          FE::has_extension(path, ".off");
 }
 
-// The options that apply to a point set, EPS absolute; OUT as given, IN with --in-place, or IN's
-// name with _faired in the current folder; or the reason the run cannot start.
+// The options that apply to a point set, EPS absolute or auto (`epsilon` then 0); OUT as given,
+// IN with --in-place, or IN's name with _faired in the current folder; or the reason the run
+// cannot start.
 inline std::string point_set_options_error(const Tool_options& options, double& epsilon, std::string& out)
 {
   if(options.fixed_border || options.repair || options.force || options.extents || options.radius_property ||
      options.label_format || options.feature_angle)
     return "of the options, only --eps, --accurate, --tangential-motion, --box and --in-place apply to a point set";
   const FE::Epsilon_text eps = FE::parse_epsilon(options.eps.value_or(""));
-  if(!options.eps || !eps.error.empty() || eps.kind != FE::Epsilon_text::Kind::ABSOLUTE)
-    return "a point set needs --eps as a distance (such as 0.002): it has no edges for h, nor a noise estimate yet";
-  epsilon = eps.value;
+  if(!options.eps || !eps.error.empty() || eps.kind == FE::Epsilon_text::Kind::RELATIVE)
+    return "a point set needs --eps as a distance (such as 0.002) or auto: it has no edges for h";
+  epsilon = eps.kind == FE::Epsilon_text::Kind::AUTO ? 0 : eps.value;
   const std::string& in = options.positional[0];
   out = options.positional.size() > 1 ? options.positional[1]
         : options.in_place            ? in
@@ -95,6 +97,14 @@ inline int fair_point_set_file(const Tool_options& options)
   if(const std::string error = FE::read_point_set_file(in, contents); !error.empty())
     return report_error(error);
   const std::size_t n = contents.points.size();
+  if(epsilon == 0) // --eps auto
+  {
+    epsilon = PMP::estimate_noise_level_of_points(contents.points, CGAL::parameters::point_map(
+                                                                     CGAL::First_of_pair_property_map<Item>()));
+    if(!(epsilon > 0))
+      return report_error("cannot estimate the noise level of so few points; give --eps");
+    std::cout << "eps: auto, " << epsilon << std::endl;
+  }
   std::vector<double> deviation(n, 0.);
   std::vector<std::uint8_t> at_bound(n, 0);
   progress.phase("checking and starting (" + std::to_string(n) + " points)");

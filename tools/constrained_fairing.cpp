@@ -42,8 +42,9 @@ input position (Hildebrandt and Polthier, SGP 2007).
   A point set IN (.xyz, .pwn with normals, or a .ply or .off without faces) is faired by
   constrained_fairing_of_points(), every point kept in its order, into OUT of those formats
   (default IN's name with _faired); a .ply carries IN's vertex properties, its normals (nx, ny,
-  nz) faired, and gets "deviation" and "at_bound". EPS must then be a distance; of the options,
-  only --accurate, --tangential-motion, --box and --in-place apply.
+  nz) faired, and gets "deviation" and "at_bound". EPS must then be a distance or auto (the
+  noise estimated from the points' neighbourhoods); of the options, only --accurate,
+  --tangential-motion, --box and --in-place apply.
 
   A label map IN (a segmentation, one integer label per voxel, 0 the background: NIfTI-1 .nii
   or .nii.gz, INRIMAGE-4 .inr or .inr.gz as CGAL's Mesh_3 reads them, numpy's .npy) gives one
@@ -58,7 +59,7 @@ input position (Hildebrandt and Polthier, SGP 2007).
 
 options:
   --eps EPS                the tolerance: absolute (0.002), relative to the mean edge length h
-                           (0.25h), or auto, the noise level estimated from the mesh itself; it
+                           (0.25h), or auto, the noise level estimated from IN itself; it
                            caps every other size below. Default: 0.25h, or the largest size
                            the options give
   --box                    each coordinate within EPS of its input value (a cube) instead of

@@ -18,6 +18,12 @@ from ._arrays import (_as_array, bound_arrays, choice_argument, count_argument, 
 from ._errors import Defect, InputError
 from ._report import Report, Status
 
+DEFAULT_NEIGHBORS = 32
+"""The C++ default of ``number_of_neighbors``: a point set's neighbours per point."""
+
+NOISE_FIT_NEIGHBORS = 14
+"""The fewest neighbours of the noise estimate's cubic fit (ten coefficients and a margin)."""
+
 _METHODS = ("quasi_newton", "active_set_newton", "projected_gradient")
 _UINT_MAX = 2**32 - 1
 
@@ -383,18 +389,26 @@ def mean_edge_length(vertices: ArrayLike, faces: ArrayLike) -> float:
     return _measure(_core.mean_edge_length, vertices, faces)
 
 
-def estimate_noise_level(vertices: ArrayLike, faces: ArrayLike) -> float:
-    """Estimate the noise level of a triangle mesh, a value for `fair`'s `epsilon`.
+def estimate_noise_level(vertices: ArrayLike, faces: Optional[ArrayLike] = None, *,
+                         neighbors: int = DEFAULT_NEIGHBORS) -> float:
+    """Estimate the noise level of a triangle mesh or a point set, a value for `epsilon`.
 
-    The radius ``r`` of noise uniform in a ball that would give the mesh's roughness, measured
-    by the deviation of each vertex from a cubic fitted to its two rings of neighbours
-    (``CGAL::Polygon_mesh_processing::estimate_noise_level()``; the command-line tool's
-    ``--eps auto``). Meant for scans; on meshes of fewer than a few hundred vertices it may be 0.
+    The radius ``r`` of noise uniform in a ball that would give the surface's roughness,
+    measured by the deviation of each vertex from a cubic fitted to its neighbours: a mesh
+    vertex's two rings (``CGAL::Polygon_mesh_processing::estimate_noise_level()``), or, without
+    `faces`, a point's `neighbors` nearest points (``estimate_noise_level_of_points()``, for
+    `fair_points`; about ``2.2 sigma`` for Gaussian noise of ``sigma`` up to about the points'
+    spacing, and lower for stronger noise). The command-line tool's ``--eps auto``. Meant for
+    scans; on fewer than a few hundred vertices it may be 0.
 
     Parameters
     ----------
-    vertices, faces : array_like
-        As in `mean_edge_length`.
+    vertices : array_like
+        As in `mean_edge_length`, or a point set's ``(n, 3)`` coordinates.
+    faces : array_like, optional
+        As in `mean_edge_length`; None for a point set.
+    neighbors : int
+        A point set's neighbours per point, at least 14; ignored for a mesh.
 
     Returns
     -------
@@ -404,9 +418,21 @@ def estimate_noise_level(vertices: ArrayLike, faces: ArrayLike) -> float:
     Raises
     ------
     InputError
-        As `mean_edge_length`.
+        As `mean_edge_length`; for a point set, ``NON_FINITE_COORDINATE`` and
+        ``INVALID_NUMBER_OF_NEIGHBORS``.
     """
-    return _measure(_core.estimate_noise_level, vertices, faces)
+    if faces is not None:
+        return _measure(_core.estimate_noise_level, vertices, faces)
+    P = vertices_array(vertices)
+    neighbors = count_argument(neighbors, "neighbors")
+    if neighbors < NOISE_FIT_NEIGHBORS:
+        raise InputError(Defect.INVALID_NUMBER_OF_NEIGHBORS,
+                         f"the noise estimate needs at least {NOISE_FIT_NEIGHBORS} neighbours per point "
+                         f"(got {neighbors})")
+    if not np.isfinite(P).all():
+        row = int(np.flatnonzero(~np.isfinite(P).all(axis=1))[0])
+        raise InputError(Defect.NON_FINITE_COORDINATE, f"point {row} has a NaN or infinite coordinate")
+    return _core.estimate_noise_level_of_points(P, neighbors)
 
 
 def set_max_threads(threads: int) -> None:

@@ -10,12 +10,8 @@ from numpy.typing import ArrayLike
 
 from . import _core
 from ._arrays import bound_arrays, count_argument, numbers_array, vertices_array
-from ._fairing import Progress, _Progress, call_options, result_of
+from ._fairing import DEFAULT_NEIGHBORS, Progress, _Progress, call_options, result_of
 from ._report import Report
-
-DEFAULT_NEIGHBORS = 32
-"""The C++ default of ``number_of_neighbors``."""
-
 
 @dataclasses.dataclass(frozen=True, repr=False)
 class PointsReport(Report):

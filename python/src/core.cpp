@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_interfaces.h>
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level.h>
+#include <CGAL/Polygon_mesh_processing/estimate_noise_level_of_points.h>
 #include <CGAL/Polygon_mesh_processing/label_map_epsilon.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
@@ -973,6 +974,17 @@ void bind_fairing(py::module_& m)
       return measure_mesh(vertices, faces, [](const Mesh& mesh) { return PMP::estimate_noise_level(mesh); });
     },
     py::arg("vertices"), py::arg("faces"));
+  m.def(
+    "estimate_noise_level_of_points",
+    [](const Float_array& vertices, std::size_t neighbors) {
+      py::gil_scoped_release release;
+      std::vector<Point> points;
+      const double* p = vertices.data();
+      for(py::ssize_t i = 0; i < vertices.shape(0); ++i, p += 3)
+        points.emplace_back(p[0], p[1], p[2]);
+      return PMP::estimate_noise_level_of_points(points, CFP::number_of_neighbors(neighbors));
+    },
+    py::arg("vertices"), py::arg("neighbors"));
 }
 
 // Label maps: their surfaces, their fairing and the frame of their voxels.

@@ -123,3 +123,33 @@ def test_tool_refuses_relative_eps(tmp_path):
     done = run_tool("--eps", "0.25h", tmp_path / "scan.xyz", tmp_path / "out.xyz")
     assert done.returncode == 1 and "needs --eps as a distance" in done.stderr
     assert not (tmp_path / "out.xyz").exists()
+
+
+def test_noise_estimate_of_points():
+    P, _ = noisy_sphere(3000, 7)
+    before = P.copy()
+    estimate = cf.estimate_noise_level(P)
+    assert np.array_equal(P, before)
+    # Gaussian noise well under the points' spacing: about 2.2 sigma (the C++ documentation).
+    assert 1.9 * SIGMA < estimate < 2.6 * SIGMA
+    assert cf.estimate_noise_level(P[::-1]) == pytest.approx(estimate, rel=1e-12)
+    assert cf.estimate_noise_level(P, neighbors=64) > 0
+    with pytest.raises(cf.InputError) as error:
+        cf.estimate_noise_level(P, neighbors=10)
+    assert error.value.defect == cf.Defect.INVALID_NUMBER_OF_NEIGHBORS
+    P[5, 1] = np.nan
+    with pytest.raises(cf.InputError) as error:
+        cf.estimate_noise_level(P)
+    assert error.value.defect == cf.Defect.NON_FINITE_COORDINATE
+    assert "point 5" in str(error.value)
+
+
+@needs_tool
+def test_tool_eps_auto_is_the_estimate(tmp_path):
+    P, _ = noisy_sphere(2000, 8)
+    np.savetxt(tmp_path / "scan.xyz", P, fmt="%.17g")
+    done = run_tool("--eps", "auto", tmp_path / "scan.xyz", tmp_path / "out.xyz")
+    assert done.returncode == 0, done.stderr
+    assert "eps: auto" in done.stdout
+    Q, report = cf.fair_points(P, cf.estimate_noise_level(P))
+    assert np.array_equal(np.loadtxt(tmp_path / "out.xyz"), Q)
