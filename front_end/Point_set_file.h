@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <fstream>
@@ -141,11 +142,18 @@ bool write_point_set_file(const std::string& path, const std::vector<std::pair<P
     stream.precision(17);
     return CGAL::IO::write_OFF(stream, mesh) && stream.flush();
   }
-  for(Ply_property& p : properties.vertex)
-    for(int c = 0; c < 3; ++c)
-      if(has_normals && p.name == std::string("n") + "xyz"[c])
-        for(std::size_t i = 0; i < points.size(); ++i)
-          p.values[i] = points[i].second[c];
+  // The normals where the properties have them, else first after the positions.
+  for(int c = 0; c < 3 && has_normals; ++c)
+  {
+    const std::string name = std::string("n") + "xyz"[c];
+    auto p = std::find_if(properties.vertex.begin(), properties.vertex.end(),
+                          [&name](const Ply_property& q) { return q.name == name; });
+    if(p == properties.vertex.end())
+      p = properties.vertex.insert(properties.vertex.begin() + c, Ply_property{name, "double", {}});
+    p->values.resize(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      p->values[i] = points[i].second[c];
+  }
   add_ply_properties<typename CGAL::Surface_mesh<Point>::Vertex_index>(properties.vertex, "v:", mesh);
   add_ply_properties<typename CGAL::Surface_mesh<Point>::Vertex_index>(extra, "v:", mesh);
   return write_PLY_mesh_file(path, mesh, properties.comments);

@@ -4,14 +4,16 @@ The Python interface of CGAL Constrained Fairing, the implementation of K. Hilde
 K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy arrays:
 
 - `fair` fairs a mesh ``(vertices, faces)`` within a tolerance ``epsilon``;
+- `fair_points` fairs a point set within ``epsilon``, every point kept in its order;
 - `mean_edge_length` and `estimate_noise_level` help choose ``epsilon``;
-- `read_mesh` and `write_mesh` read and write OFF, OBJ, PLY and STL files;
+- `read_mesh` and `write_mesh` read and write OFF, OBJ, PLY and STL files, `read_points` and
+  `write_points` point sets (XYZ, PWN, and PLY and OFF without faces);
 - `label_surfaces` makes a label map's surfaces, one closed surface per label with the interfaces
   shared exactly, faired together within their voxels; `fair_interfaces` fairs such a
   multi-label triangle soup; `read_label_map` reads a label map from a NIfTI, INRIMAGE-4 or
   .npy file;
-- `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files, meshes and label
-  maps, on a Dask cluster, also from the command line:
+- `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files, meshes, point sets
+  and label maps, on a Dask cluster, also from the command line:
   ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.
 
 Example
@@ -24,7 +26,7 @@ Example
 
 from ._errors import Defect, InputError
 from ._fairing import estimate_noise_level, fair, max_threads, mean_edge_length, set_max_threads
-from ._io import MeshProperties, read_mesh, write_mesh
+from ._io import MeshProperties, is_point_set_file, read_mesh, read_points, write_mesh, write_points
 from ._label_map_files import read_label_map
 from ._labels import LABEL_BOX_MARGIN, LabelSurfaces, fair_interfaces, label_surfaces
 from ._points import PointsReport, fair_points
@@ -35,7 +37,8 @@ __version__ = "0.1.0"
 __all__ = [
     "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "MeshProperties", "Report", "Status", "estimate_noise_level", "fair",
     "fair_files", "fair_interfaces", "fair_points", "PointsReport", "label_surfaces", "max_threads", "mean_edge_length",
-    "read_label_map", "read_mesh", "set_max_threads", "write_mesh",
+    "is_point_set_file", "read_label_map", "read_mesh", "read_points", "set_max_threads", "write_mesh",
+    "write_points",
 ]
 
 

@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _core
-from ._arrays import faces_array, vertices_array
+from ._arrays import faces_array, numbers_array, vertices_array
 from ._errors import InputError
 
 FORMATS = (".off", ".obj", ".ply", ".stl")
@@ -150,6 +150,96 @@ def write_mesh(path: "os.PathLike[str] | str", vertices: ArrayLike, faces: Array
         raise ValueError(f"{path}: properties are written to a .ply file only")
     _core.write_mesh_with_properties(path, V, F, _untyped(properties.vertex, len(V), "vertex"),
                                      _untyped(properties.face, len(F), "face"), properties.comments)
+
+
+POINT_SET_FORMATS = (".xyz", ".pwn", ".ply", ".off")
+"""The extensions of point set files; a ``.ply`` or ``.off`` file is one when it has no face."""
+
+
+def is_point_set_file(path: "os.PathLike[str] | str") -> bool:
+    """Whether `path` holds a point set, as the command-line tool decides.
+
+    An ``.xyz`` or ``.pwn`` file, or a ``.ply`` or ``.off`` file whose header declares points
+    and no face.
+    """
+    return bool(_core.is_point_set_file(os.fspath(path)))
+
+
+def read_points(path: "os.PathLike[str] | str", *, properties: bool = False):
+    """Read a point set file as the command-line tool does: ``.xyz``, ``.pwn`` (with normals),
+    or ``.ply`` and ``.off`` without faces.
+
+    ``fair_points(*read_points(p), eps)`` gives the tool's points for ``p``, bit for bit.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file; its extension names the format.
+    properties : bool
+        Also return the file's `MeshProperties`: every scalar vertex property of a PLY file
+        (its normals ``nx``, ``ny``, ``nz`` among them), which `write_points` writes back.
+
+    Returns
+    -------
+    points : numpy.ndarray
+        ``(n, 3)`` float64, in the file's order.
+    normals : numpy.ndarray or None
+        ``(n, 3)`` float64, the file's normals (``.pwn``, a PLY's ``nx``, ``ny``, ``nz``), or
+        None.
+    properties : MeshProperties
+        With ``properties=True`` only.
+
+    Raises
+    ------
+    ValueError
+        A file that cannot be read as a point set, with the reason.
+    """
+    P, N, vertex, comments, dropped = _core.read_point_set(os.fspath(path))
+    if not properties:
+        return P, N
+    return P, N, MeshProperties(vertex=_typed(vertex), comments=comments, dropped=list(dropped))
+
+
+def write_points(path: "os.PathLike[str] | str", points: ArrayLike,
+                 normals: Optional[ArrayLike] = None, *,
+                 properties: Optional[MeshProperties] = None) -> None:
+    """Write a point set file as the command-line tool writes its output, at full precision.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file; its extension (``.xyz``, ``.pwn``, ``.ply``, ``.off``) names the format.
+    points : array_like, shape (n, 3)
+        The points, any floating-point dtype.
+    normals : array_like, shape (n, 3), optional
+        Their normals, written to a ``.pwn`` (which needs them) or a ``.ply`` file, where they
+        replace the properties' ``nx``, ``ny``, ``nz``.
+    properties : MeshProperties, optional
+        Vertex properties and comments for a ``.ply`` file, as `write_mesh` takes them; face
+        properties are refused, a point set has no face.
+
+    Raises
+    ------
+    ValueError
+        An unknown extension, arrays of the wrong shape, properties for a file that is not PLY
+        or of the wrong length or dtype, or a file that cannot be written.
+    """
+    path = os.fspath(path)
+    extension = os.path.splitext(path)[1].lower()
+    if extension not in POINT_SET_FORMATS:
+        raise ValueError(f"{path}: the extension must be one of {', '.join(POINT_SET_FORMATS)}")
+    P = vertices_array(points)
+    N = None if normals is None else numbers_array(normals, "normals", [(P.shape[0], 3)])
+    if extension == ".pwn" and N is None:
+        raise ValueError(f"{path}: a .pwn file holds normals; give them")
+    vertex, comments = [], ""
+    if properties is not None:
+        if properties.face:
+            raise ValueError(f"{path}: a point set has no face for face properties")
+        if properties.vertex and extension != ".ply":
+            raise ValueError(f"{path}: properties are written to a .ply file only")
+        vertex, comments = _untyped(properties.vertex, len(P), "vertex"), properties.comments
+    _core.write_point_set(path, P, N, vertex, comments)
 
 
 def _typed(properties) -> Dict[str, np.ndarray]:

@@ -25,6 +25,7 @@
 #include "front_end/Mean_edge_length.h"
 #include "front_end/Mesh_file.h"
 #include "front_end/Output_files.h"
+#include "front_end/Point_set_file.h"
 #include "front_end/Voxel_frame.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -810,6 +811,55 @@ void write_mesh_with_properties(const std::string& path, const Float_array& vert
     throw py::value_error(error);
 }
 
+// A point set file as the tool reads it (front_end/Point_set_file.h): (points, normals or None,
+// vertex properties, comments, dropped), a PLY file's normals among its properties.
+py::tuple read_point_set(const std::string& path)
+{
+  FE::Point_set_contents<Point, K::Vector_3> contents;
+  std::string error;
+  {
+    py::gil_scoped_release release;
+    error = FE::read_point_set_file(path, contents);
+  }
+  if(!error.empty())
+    throw py::value_error(error);
+  const py::ssize_t n = py::ssize_t(contents.points.size());
+  Float_array P({n, py::ssize_t(3)}), N({n, py::ssize_t(3)});
+  for(py::ssize_t i = 0; i < n; ++i)
+    for(int c = 0; c < 3; ++c)
+    {
+      P.mutable_data()[3 * i + c] = contents.points[std::size_t(i)].first[c];
+      N.mutable_data()[3 * i + c] = contents.points[std::size_t(i)].second[c];
+    }
+  const FE::Ply_properties& p = contents.properties;
+  return py::make_tuple(P, contents.has_normals ? py::object(N) : py::object(py::none()), property_list(p.vertex),
+                        p.comments, p.dropped);
+}
+
+// Writes a point set file as the tool writes its output: the normals if given (a PLY's nx, ny,
+// nz replaced by them), a PLY's vertex properties and comments.
+void write_point_set(const std::string& path, const Float_array& points, const std::optional<Float_array>& normals,
+                     const py::list& vertex_properties, const std::string& comments)
+{
+  FE::Ply_properties properties;
+  properties.vertex = properties_of(vertex_properties);
+  properties.comments = comments;
+  bool written = false;
+  {
+    py::gil_scoped_release release;
+    std::vector<std::pair<Point, K::Vector_3> > items;
+    const double* v = points.data();
+    for(py::ssize_t i = 0; i < points.shape(0); ++i, v += 3)
+    {
+      const double* n = normals ? normals->data() + 3 * i : nullptr;
+      items.emplace_back(Point(v[0], v[1], v[2]), n ? K::Vector_3(n[0], n[1], n[2]) : K::Vector_3(0, 0, 0));
+    }
+    written = FE::write_point_set_file(path, items, bool(normals), std::move(properties), {});
+  }
+  if(!written)
+    throw py::value_error("cannot write " + path + FE::unwritable_file_reason(path));
+}
+
 // Writes meshes (V, F) as the files `names` of `folder`, as the tool writes a label map's
 // surfaces (front_end/Output_files.h); refuses, before writing anything, what that refuses
 // (`source` being the input, or empty).
@@ -1020,6 +1070,10 @@ void bind_files(py::module_& m)
   m.def("write_files_into_folder", &write_files_into_folder, py::arg("source"), py::arg("folder"), py::arg("names"),
         py::arg("meshes"), py::arg("force"));
   m.def("read_mesh_with_properties", &read_mesh_with_properties, py::arg("path"), py::arg("repair"));
+  m.def("is_point_set_file", &FE::is_point_set_file, py::arg("path"));
+  m.def("read_point_set", &read_point_set, py::arg("path"));
+  m.def("write_point_set", &write_point_set, py::arg("path"), py::arg("points"), py::arg("normals"),
+        py::arg("vertex_properties"), py::arg("comments"));
   m.def("write_mesh_with_properties", &write_mesh_with_properties, py::arg("path"), py::arg("vertices"),
         py::arg("faces"), py::arg("vertex_properties"), py::arg("face_properties"), py::arg("comments"));
 }

@@ -496,3 +496,35 @@ def test_a_ply_soup_that_is_no_mesh_is_named_as_an_off_one(client, tmp_path):
     assert "repair=True" in error.value.message
     [row] = fair_files([path], tmp_path / "out", client, progress=False)
     assert row["status"] == "error" and row["error"].startswith("NON_MANIFOLD_EDGE: ")
+
+
+@pytest.mark.skipif(not os.environ.get("CONSTRAINED_FAIRING_TOOL"), reason="needs the built tool")
+def test_point_sets_in_a_batch_are_the_tools(client, tmp_path):
+    """A face-less PLY with properties and an .xyz beside a mesh: each point set's output is the
+    command-line tool's, byte for byte; an eps in h is an error row for a point set only."""
+    rng = np.random.default_rng(4)
+    d = rng.normal(size=(1500, 3))
+    d /= np.linalg.norm(d, axis=1)[:, None]
+    P = d + 0.01 * rng.normal(size=d.shape)
+    (tmp_path / "in").mkdir()
+    ply, xyz = tmp_path / "in" / "scan.ply", tmp_path / "in" / "dots.xyz"
+    cf.write_points(ply, P, d, properties=cf.MeshProperties(
+        vertex={"red": (np.arange(len(P)) % 256).astype(np.uint8)}, comments="scanner 7\n"))
+    cf.write_points(xyz, P)
+    [mesh] = copy_inputs(tmp_path / "in", good=GOOD[1:2], bad=False)
+    rows = fair_files([ply, xyz, mesh], tmp_path / "out", client, eps="auto", progress=False,
+                      objective="accurate")
+    assert [row["status"] in DONE for row in rows] == [True, True, True]
+    assert rows[0]["epsilon"] == cf.estimate_noise_level(P)
+    tool = os.environ["CONSTRAINED_FAIRING_TOOL"]
+    for path in (ply, xyz):
+        made = tmp_path / ("tool" + path.suffix)
+        subprocess.run([tool, "--eps", "auto", "--accurate", path, made], check=True,
+                       capture_output=True)
+        assert made.read_bytes() == (tmp_path / "out" / path.name).read_bytes()
+    rows = fair_files([xyz, mesh], tmp_path / "out_h", client, eps="0.25h", progress=False)
+    assert rows[0]["status"] == "error" and "no edges for h" in rows[0]["error"]
+    assert rows[1]["status"] in DONE
+    rows = fair_files([xyz], tmp_path / "out_k", client, eps=0.03, progress=False, neighbors=16,
+                      region=None)
+    assert rows[0]["status"] == "error" and "point sets do not take: region" in rows[0]["error"]

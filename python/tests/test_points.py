@@ -153,3 +153,30 @@ def test_tool_eps_auto_is_the_estimate(tmp_path):
     assert "eps: auto" in done.stdout
     Q, report = cf.fair_points(P, cf.estimate_noise_level(P))
     assert np.array_equal(np.loadtxt(tmp_path / "out.xyz"), Q)
+
+
+def test_point_set_files_round_trip(tmp_path):
+    """read_points and write_points: each format's points and normals, and a PLY's properties
+    and comments, come back as written; a mesh file is not a point set."""
+    P, N = noisy_sphere(300, 9)
+    properties = cf.MeshProperties(vertex={"red": (np.arange(300) % 256).astype(np.uint8),
+                                           "confidence": np.linspace(0, 1, 300)},
+                                   comments="scanner 7\n")
+    for name, normals in (("a.xyz", None), ("a.pwn", N), ("a.off", None), ("a.ply", N)):
+        cf.write_points(tmp_path / name, P, normals,
+                        properties=properties if name.endswith(".ply") else None)
+        assert cf.is_point_set_file(tmp_path / name)
+        Q, M, carried = cf.read_points(tmp_path / name, properties=True)
+        assert np.array_equal(Q, P)
+        assert (M is None) == (normals is None) and (M is None or np.array_equal(M, N))
+        if name.endswith(".ply"):
+            assert list(carried.vertex)[-2:] == ["red", "confidence"]
+            assert np.array_equal(carried.vertex["red"], properties.vertex["red"])
+            assert carried.comments == "scanner 7\n"
+    V = np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]])
+    cf.write_mesh(tmp_path / "mesh.off", V, [[0, 1, 2]])
+    assert not cf.is_point_set_file(tmp_path / "mesh.off")
+    with pytest.raises(ValueError, match="needs|normals"):
+        cf.write_points(tmp_path / "b.pwn", P)
+    with pytest.raises(ValueError, match="extension"):
+        cf.write_points(tmp_path / "b.stl", P)

@@ -1,8 +1,9 @@
-"""Fair batches of mesh files on a Dask ``distributed`` cluster.
+"""Fair batches of mesh, point set and label map files on a Dask ``distributed`` cluster.
 
 `fair_files` fairs each file in a task of its own, writes each result into an output folder
 under the input's file name (same format), and keeps a table of what was done in
-``OUT_DIR/report.csv``. Label maps (NIfTI ``.nii``, ``.nii.gz``, INRIMAGE-4 ``.inr``,
+``OUT_DIR/report.csv``. Point sets (``.xyz``, ``.pwn``, and ``.ply`` and ``.off`` files
+without faces) are faired with every point kept in its order. Label maps (NIfTI ``.nii``, ``.nii.gz``, INRIMAGE-4 ``.inr``,
 ``.inr.gz`` and ``.npy``) give one closed surface per label, faired together within their
 voxels, in a folder named after the map. A file that cannot be read or is rejected gets its
 error in the table and the batch goes on; a second run skips the files already done and
@@ -58,12 +59,15 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
                label_format: str = "ply",
                repair: bool = False,
                **fair_options: Any) -> List[Row]:
-    """Fair mesh files and label maps on a Dask cluster, one task per file; report what was done.
+    """Fair mesh, point set and label map files on a Dask cluster, one task per file; report
+    what was done.
 
     Each mesh file is read with `read_mesh`, faired with `fair` and written to
     ``out_dir / <its file name>`` (same format) through a temporary file, so that an output
     file is always complete; a PLY file's vertex and face properties are carried to its output,
-    with each vertex's ``deviation`` and ``at_bound``. Each label map (``.nii``, ``.nii.gz``,
+    with each vertex's ``deviation`` and ``at_bound``. Each point set file (`is_point_set_file`)
+    is read with `read_points`, faired with `fair_points` (its normals, if it has them, faired
+    too) and written likewise, a PLY file's properties carried. Each label map (``.nii``, ``.nii.gz``,
     ``.inr``, ``.inr.gz``, ``.npy``) is read with `read_label_map`, its surfaces made and faired together within
     their voxels with `label_surfaces` (its affine applied: the surfaces are in world
     coordinates), and each label's closed surface written to
@@ -78,7 +82,8 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
     Parameters
     ----------
     paths : sequence of str or os.PathLike
-        The mesh files (OFF, OBJ, PLY or STL) and label maps (NIfTI ``.nii``, ``.nii.gz``,
+        The mesh files (OFF, OBJ, PLY or STL), point sets (XYZ, PWN, and PLY or OFF without
+        faces) and label maps (NIfTI ``.nii``, ``.nii.gz``,
         INRIMAGE-4 ``.inr``, ``.inr.gz``, numpy ``.npy``), by extension; their outputs' names
         must differ. Relative paths are taken from the current directory.
     out_dir : str or os.PathLike
@@ -92,7 +97,8 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         The tolerance of each file: ``"<x>h"`` for x times its `mean_edge_length`,
         ``"auto"`` for its `estimate_noise_level`, or a number (or numeric string) in the
         meshes' units; the command-line tool's ``--eps`` reads the same texts (default
-        ``"0.25h"``). Label maps are bounded by their voxels instead.
+        ``"0.25h"``). A point set has no edges: it takes a number or ``"auto"``, and is an
+        error row with ``"<x>h"``. Label maps are bounded by their voxels instead.
     workers : int, optional
         The worker processes of the local cluster: default, and at most, one per core (and
         no more than files to fair). Only without `client`.
@@ -110,12 +116,13 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         The format of the labels' surfaces.
     repair : bool
         Make a mesh of each mesh file that is a soup but not a mesh, as `read_mesh`'s
-        `repair` (the command-line tool's ``--repair``).
+        `repair` (the command-line tool's ``--repair``); point sets are read as they are.
     **fair_options
-        Passed to `fair` unchanged for every mesh file, e.g. ``objective="accurate"``
-        (`progress` is the batch's own; `fair`'s progress is not available here); with label
-        maps among the inputs, only ``objective`` and ``max_iterations``, which
-        `label_surfaces` takes too.
+        Passed to `fair` unchanged for every mesh file and to `fair_points` for every point
+        set, e.g. ``objective="accurate"`` (`progress` is the batch's own; `fair`'s progress
+        is not available here); a file whose function does not take one of them (``region``
+        for a point set, ``neighbors`` for a mesh) is an error row. With label maps among the
+        inputs, only ``objective`` and ``max_iterations``, which `label_surfaces` takes too.
 
     Returns
     -------
@@ -138,7 +145,7 @@ def fair_files(paths: Sequence["os.PathLike[str] | str"],
         output that would overwrite its input, a bad `eps`, `workers` or `label_format`,
         `workers` with `client`, or label maps with options they do not take.
     TypeError
-        An option that `fair` does not take.
+        An option that neither `fair` nor `fair_points` takes.
     ImportError
         Dask's ``distributed`` is not installed.
 

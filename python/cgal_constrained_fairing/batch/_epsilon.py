@@ -1,4 +1,4 @@
-"""The batch's `eps`: checked once for the batch, then turned into each mesh's epsilon.
+"""The batch's `eps`: checked once for the batch, then turned into each file's epsilon.
 
 A text is read by the library's one grammar of tolerances (``front_end/Epsilon_grammar.h``),
 which the command-line tool's ``--eps`` reads too: ``"0.002"``, ``"0.25h"``, ``"h"`` or
@@ -37,5 +37,18 @@ def mesh_epsilon(eps: Tuple[str, float], V, F) -> float:
         noise = estimate_noise_level(V, F)
         if not noise > 0:
             raise ValueError("cannot estimate the noise level of so small a mesh; give eps")
+        return noise
+    return value
+
+
+def points_epsilon(eps: Tuple[str, float], P) -> float:
+    """The epsilon of the point set `P` for a `parse_eps` result; ValueError if none."""
+    kind, value = eps
+    if kind == "h":
+        raise ValueError("a point set has no edges for h; give eps as a distance or auto")
+    if kind == "auto":
+        noise = estimate_noise_level(P)
+        if not noise > 0:
+            raise ValueError("cannot estimate the noise level of so few points; give eps")
         return noise
     return value

@@ -14,10 +14,11 @@ from typing import Any, Dict, List, Optional, Tuple
 
 from .._errors import InputError
 from .._fairing import fair, set_max_threads
-from .._io import FORMATS, read_mesh, write_mesh
+from .._io import FORMATS, is_point_set_file, read_mesh, read_points, write_mesh, write_points
 from .._label_map_files import label_map_stem, read_label_map
 from .._labels import label_surfaces
-from ._epsilon import mesh_epsilon, parse_eps
+from .._points import fair_points
+from ._epsilon import mesh_epsilon, parse_eps, points_epsilon
 from ._progress import Bar
 from ._report_file import REPORT_NAME, Row, empty_row, read_report, write_report
 
@@ -219,8 +220,11 @@ def _task(path: str):
 
 
 def _fair_file(job: Dict[str, Any], eps: Tuple[str, float], repair: bool) -> Row:
-    """The task of one file, run in a worker: read, fair, write; never raises. A PLY file's
-    properties are carried to its output, with each vertex's deviation and at_bound."""
+    """The task of one mesh or point set file, run in a worker: read, fair, write; never raises.
+    A PLY file's properties are carried to its output, with each vertex's deviation and
+    at_bound."""
+    if is_point_set_file(job["path"]):
+        return _fair_point_set_file(job, eps)
     path, output = job["path"], job["output"]
     with _task(path) as row:
         set_max_threads(job["threads"])
@@ -229,24 +233,57 @@ def _fair_file(job: Dict[str, Any], eps: Tuple[str, float], repair: bool) -> Row
         row.update(vertices=int(V.shape[0]), faces=int(F.shape[0]))
         epsilon = mesh_epsilon(eps, V, F)
         row["epsilon"] = epsilon
-        W, report = fair(V, F, epsilon, **job["fair_options"])
-        properties = carried[0] if carried and ply else None
-        if properties is not None:
-            properties.vertex["deviation"] = report.deviation
-            properties.vertex["at_bound"] = report.at_bound.astype("uint8")
-        # The temporary keeps the extension: the writer is chosen by it.
-        stem, ext = os.path.splitext(os.path.basename(output))
-        partial = os.path.join(os.path.dirname(output), f".{stem}.partial-{os.getpid()}{ext}")
-        try:
-            write_mesh(partial, W, F, properties=properties)
-            if os.path.exists(output) and not job["replace"]:
-                raise FileExistsError(f"{output} appeared during the run; it is not replaced")
-            os.replace(partial, output)
-        finally:
-            with contextlib.suppress(OSError):
-                os.remove(partial)
+        W, report = fair(V, F, epsilon, **_options_for(fair, job["fair_options"], "meshes"))
+        properties = _with_bound_columns(carried[0] if carried and ply else None, report)
+        _write_complete(output, job["replace"], lambda partial: write_mesh(partial, W, F, properties=properties))
         _record(row, report, output, job["options"])
     return row
+
+
+def _fair_point_set_file(job: Dict[str, Any], eps: Tuple[str, float]) -> Row:
+    """The task of one point set file (`fair_points`), as the command-line tool fairs it: its
+    normals faired, a PLY file's properties carried. Never raises."""
+    path, output = job["path"], job["output"]
+    with _task(path) as row:
+        set_max_threads(job["threads"])
+        ply = path.lower().endswith(".ply")
+        P, N, *carried = read_points(path, properties=ply)
+        row.update(vertices=int(P.shape[0]), faces=0)
+        epsilon = points_epsilon(eps, P)
+        row["epsilon"] = epsilon
+        options = _options_for(fair_points, job["fair_options"], "point sets")
+        Q, report = fair_points(P, epsilon, N, **options)
+        properties = _with_bound_columns(carried[0] if carried else None, report)
+        _write_complete(output, job["replace"],
+                        lambda partial: write_points(partial, Q, report.normals, properties=properties))
+        _record(row, report, output, job["options"])
+    return row
+
+
+def _with_bound_columns(properties, report):
+    """A PLY file's `properties` with each vertex's deviation and at_bound, as the tool adds
+    them; None for a file without."""
+    if properties is not None:
+        properties.vertex["deviation"] = report.deviation
+        properties.vertex["at_bound"] = report.at_bound.astype("uint8")
+    return properties
+
+
+def _write_complete(output: str, replace: bool, write) -> None:
+    """`write(partial)` into a temporary beside `output`, then renamed into place, so that an
+    output is always complete; an output that appeared during the run is kept unless
+    `replace`."""
+    # The temporary keeps the extension: the writer is chosen by it.
+    stem, ext = os.path.splitext(os.path.basename(output))
+    partial = os.path.join(os.path.dirname(output), f".{stem}.partial-{os.getpid()}{ext}")
+    try:
+        write(partial)
+        if os.path.exists(output) and not replace:
+            raise FileExistsError(f"{output} appeared during the run; it is not replaced")
+        os.replace(partial, output)
+    finally:
+        with contextlib.suppress(OSError):
+            os.remove(partial)
 
 
 def _fair_label_map(job: Dict[str, Any], label_format: str) -> Row:
@@ -288,14 +325,26 @@ def _worker_address() -> Optional[str]:
         return None
 
 
+def _keywords(function) -> set:
+    return {name for name, parameter in inspect.signature(function).parameters.items()
+            if parameter.kind is inspect.Parameter.KEYWORD_ONLY and name != "progress"}
+
+
 def _check_fair_options(options: Dict[str, Any]) -> Dict[str, Any]:
-    taken = {name for name, parameter in inspect.signature(fair).parameters.items()
-             if parameter.kind is inspect.Parameter.KEYWORD_ONLY and name != "progress"}
+    taken = _keywords(fair) | _keywords(fair_points)
     for name in options:
         if name not in taken:
-            raise TypeError(f"fair_files() got an option that fair() does not take in a batch: "
-                            f"{name!r}")
+            raise TypeError(f"fair_files() got an option that neither fair() nor fair_points() "
+                            f"takes in a batch: {name!r}")
     return dict(options)
+
+
+def _options_for(function, options: Dict[str, Any], kind: str) -> Dict[str, Any]:
+    """The batch's options for `function`; ValueError naming those that a `kind` does not take."""
+    other = sorted(set(options) - _keywords(function))
+    if other:
+        raise ValueError(f"options that {kind} do not take: {', '.join(other)}")
+    return options
 
 
 # The options of `fair` that a label map's fairing takes too (`label_surfaces`).
