@@ -512,9 +512,12 @@ def test_point_sets_in_a_batch_are_the_tools(client, tmp_path):
         vertex={"red": (np.arange(len(P)) % 256).astype(np.uint8)}, comments="scanner 7\n"))
     cf.write_points(xyz, P)
     [mesh] = copy_inputs(tmp_path / "in", good=GOOD[1:2], bad=False)
+    inputs = {p: p.read_bytes() for p in (ply, xyz, mesh)}
     rows = fair_files([ply, xyz, mesh], tmp_path / "out", client, eps="auto", progress=False,
                       objective="accurate")
     assert [row["status"] in DONE for row in rows] == [True, True, True]
+    assert all(p.read_bytes() == data for p, data in inputs.items())
+    assert no_partial_files(tmp_path / "out")
     assert rows[0]["epsilon"] == cf.estimate_noise_level(P)
     tool = os.environ["CONSTRAINED_FAIRING_TOOL"]
     for path in (ply, xyz):
