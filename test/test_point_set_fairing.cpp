@@ -5,14 +5,17 @@
 // bound in double exactly (ball and box), in its order; the energy not higher than at the
 // input and the points closer to the sphere, with either objective; the normals written where
 // the map is writable, unit and outward as given; an outlier kept where it is and counted;
-// the result the same with one thread and with four; and each defect rejected with its
-// message, the points and normals left bit-identical.
+// the estimated normals those of CGAL's jet fit, oriented alike on each of two spheres; the
+// result the same with one thread and with four; and each defect rejected with its message, the
+// points and normals left bit-identical.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Point_sets/Point_normals.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/jet_estimate_normals.h>
 #include <CGAL/property_map.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -132,6 +135,36 @@ void check_estimated_normals_and_outlier()
   CHECK(test::bound_violation(points, input, eps, PMP::Deviation_bound::BALL) <= 0);
 }
 
+// The normals estimated without CGAL's own search and graph: along CGAL's jet fit over the same
+// k nearest (the point among them), and oriented alike over each component: outward on two
+// noisy spheres apart (each tree starts at its highest point, pointed up).
+void check_estimated_normals_as_cgal()
+{
+  namespace CF = PMP::internal::Constrained_fairing;
+  std::vector<Point_with_normal> points = noisy_sphere(3000, 5), second = noisy_sphere(2000, 6);
+  for(const auto& [p, n] : second)
+    points.emplace_back(p + Vector(5, 0, 0), n);
+  CF::Points X(Eigen::Index(points.size()), 3);
+  for(std::size_t i = 0; i < points.size(); ++i)
+    X.row(Eigen::Index(i)) << points[i].first.x(), points[i].first.y(), points[i].first.z();
+  const std::size_t k = 24;
+  const CF::Points N = CF::estimated_normals(X, CF::Point_neighbours(X, k));
+  std::vector<Point_with_normal> cgal = points;
+  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cgal, unsigned(k), CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  std::size_t along = 0, outward = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Vector n(N(Eigen::Index(i), 0), N(Eigen::Index(i), 1), N(Eigen::Index(i), 2));
+    CHECK(std::abs(n.squared_length() - 1) < 1e-12);
+    along += std::abs(n * cgal[i].second) > 1 - 1e-9;
+    outward += n * points[i].second > 0.5;
+  }
+  std::cout << "  estimated normals: " << along << " of " << points.size() << " along CGAL's jet fit, " << outward
+            << " outward" << std::endl;
+  CHECK(along == points.size());
+  CHECK(outward == points.size());
+}
+
 void check_box()
 {
   const std::vector<Point_with_normal> input = noisy_sphere(3000, 3);
@@ -223,6 +256,7 @@ int main()
   check_fairing(PMP::Constrained_fairing_objective::FAIREST, "fairest");
   check_fairing(PMP::Constrained_fairing_objective::ACCURATE, "accurate");
   check_estimated_normals_and_outlier();
+  check_estimated_normals_as_cgal();
   check_box();
   check_thread_count_independence();
   check_defects();

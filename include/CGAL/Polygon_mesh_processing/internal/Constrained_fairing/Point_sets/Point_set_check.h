@@ -107,7 +107,7 @@ inline Point_set_structure point_set_structure(const Points& X, std::optional<Po
   const Point_neighbours neighbours(X, k);
   if((s.error = C::duplicate_error(X, neighbours)))
     return s;
-  s.normals = normals ? std::move(*normals) : estimated_normals(X, k);
+  s.normals = normals ? std::move(*normals) : estimated_normals(X, neighbours);
   s.isolated = C::isolated_points(neighbours, s.normals);
   s.fans = tangent_fans(X, s.normals, neighbours, s.isolated);
   bool any_closed = false;

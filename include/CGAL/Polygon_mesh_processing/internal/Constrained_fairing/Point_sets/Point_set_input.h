@@ -158,8 +158,14 @@ public:
   void add_terms(Fairing_objective& objective, const Hinge_mesh&, const Points& X0, const Fairing_settings& settings)
   {
     const Eigen::Index n = X0.rows();
+    std::size_t number_of_entries = 0, number_of_triangles = 0;
+    for(const Tangent_fan& fan : m_fans)
+      if(fan.is_closed())
+        number_of_entries += fan.weights.size() + 1, number_of_triangles += fan.triangles.size();
     std::vector<Eigen::Triplet<double> > entries;
     std::vector<Mass_triangle> masses;
+    entries.reserve(number_of_entries); // growing them would double the peak memory
+    masses.reserve(number_of_triangles);
     for(std::size_t i = 0; i < m_fans.size(); ++i)
     {
       const Tangent_fan& fan = m_fans[i];
