@@ -164,6 +164,7 @@ int fair_mesh_file(const Tool_options& options)
   // Only what the user asked for is passed: the plain call takes the library's own defaults.
   Mesh& mesh = input.mesh;
   Asked asked = ask(options, sizes, input);
+  progress.judge_by(asked.settings);
   auto deviation = mesh.add_property_map<vertex_descriptor, double>("v:deviation", 0.).first;
   auto at_bound = mesh.add_property_map<vertex_descriptor, bool>("v:at_bound", false).first;
   progress.phase("checking and starting (" + std::to_string(num_vertices(mesh)) + " vertices)");

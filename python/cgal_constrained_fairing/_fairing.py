@@ -3,6 +3,7 @@
 # The annotations stay text: help(fair) shows ``ArrayLike``, not numpy's expansion of it.
 from __future__ import annotations
 
+import collections
 import sys
 import time
 import warnings
@@ -300,16 +301,41 @@ def _region_indices(region, m):
     return indices_array(A, "region", m, "face")
 
 
+class _Decrease:
+    """What the stopping rule measures, as the iterations come: the relative energy decrease per
+    iteration averaged over its window (``Stopping_rule.h``), against the threshold below which
+    the rule may stop the run."""
+
+    def __init__(self, options):
+        defaults = _core.default_settings(options.method)
+        self.window = defaults["energy_decrease_window"]
+        self.threshold = options.given.get("energy_decrease_threshold",
+                                           defaults["energy_decrease_threshold"])
+        self._energies = collections.deque(maxlen=self.window + 1)
+
+    def push(self, energy):
+        self._energies.append(energy)
+
+    def text(self):
+        """``"decrease 3.1e-04/it (threshold 0.000125)"`` once a window is full, else ``""``."""
+        if len(self._energies) <= self.window or not self._energies[0] > 0:
+            return ""
+        rate = (self._energies[0] - self._energies[-1]) / (self.window * self._energies[0])
+        return f"decrease {rate:.2g}/it (threshold {self.threshold:.3g})"
+
+
 class _Progress:
     """The callback that `fair` hands to the library for its `progress` argument. The bar
     counts iterations with no total while the stopping rule has not stopped them (how many
-    remain is not known), says so before the first (the input's check and the smoothed start),
-    and ends at 100 % at the iteration where the call stopped."""
+    remain is not known), shows what the rule measures against its threshold (`_Decrease`), says
+    so before the first (the input's check and the smoothed start), and ends at 100 % at the
+    iteration where the call stopped."""
 
     def __init__(self, progress, options):
         self._progress = progress
         self._bar = None
         self._shown = 0.0
+        self._decrease = _Decrease(options)
 
     def __enter__(self):
         if self._progress is None or self._progress is False:
@@ -338,16 +364,20 @@ class _Progress:
             sys.stderr.flush()
         return False
 
+    def _status(self, energy):
+        self._decrease.push(energy)
+        return ", ".join(part for part in (f"energy {energy:.6g}", self._decrease.text()) if part)
+
     def _tick(self, iteration, energy):
         if self._bar.n == 0:
             self._bar.set_description("fairing", refresh=False)
         self._bar.update(iteration - self._bar.n)
-        self._bar.set_postfix_str(f"energy {energy:.6g}", refresh=False)
+        self._bar.set_postfix_str(self._status(energy), refresh=False)
 
     def _line(self, iteration, energy):
-        now = time.monotonic()
-        if now - self._shown >= 0.5:
-            self._write(f"fairing: iteration {iteration}, energy {energy:.6g}")
+        status = self._status(energy)
+        if time.monotonic() - self._shown >= 0.5:
+            self._write(f"fairing: iteration {iteration}, {status}")
 
     def _write(self, text):
         self._shown = time.monotonic()

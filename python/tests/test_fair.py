@@ -419,6 +419,20 @@ def test_progress_true_shows_a_bar(sphere, capsys):
     # It ends at 100 %, at the iteration where the stopping rule stopped the call.
     last = shown.replace("\r", "\n").strip().splitlines()[-1]
     assert "100%" in last and f"{report.number_of_iterations}/{report.number_of_iterations}" in last
+    # and with what the stopping rule measured last, against its threshold
+    assert report.number_of_iterations > 50 and "(threshold 0.000125)" in last
+
+
+def test_progress_shows_the_stopping_rules_measure():
+    from cgal_constrained_fairing._fairing import _Decrease, call_options
+    decrease = _Decrease(call_options(1.0, energy_decrease_threshold=1e-3))
+    assert decrease.window == 50 and decrease.threshold == 1e-3
+    for k in range(50):
+        decrease.push(0.99 ** k)
+        assert decrease.text() == ""  # not a whole window yet
+    decrease.push(0.99 ** 50)
+    # the window's relative decrease per iteration, (E[-51] - E[-1]) / (50 E[-51])
+    assert decrease.text() == f"decrease {(1 - 0.99 ** 50) / 50:.2g}/it (threshold 0.001)"
 
 
 def test_calls_from_two_threads_at_once(sphere, elephant):

@@ -3,6 +3,7 @@ replaced, a PLY input's properties come out again, soups are repaired when asked
 command line reads as users write it."""
 
 import os
+import re
 import signal
 import subprocess
 from pathlib import Path
@@ -273,6 +274,15 @@ def test_a_terminal_sees_the_phases_before_the_iterations(tmp_path):
     phases = [text.find(word) for word in ("reading ", "checking and starting", "fairing: iteration",
                                            "writing ")]
     assert all(at >= 0 for at in phases) and phases == sorted(phases), text
+
+
+def test_a_log_sees_the_stopping_rules_measure(tmp_path):
+    """Off a terminal, every 100 iterations: the iteration, the energy, and the relative decrease
+    per iteration over the stopping rule's window against its threshold."""
+    done = run(DATA / "elephant_noisy.off", tmp_path / "out.off")
+    assert done.returncode == 0, done.stderr
+    lines = [line for line in done.stderr.splitlines() if line.startswith("iteration ")]
+    assert lines and all(re.search(r", decrease [-0-9.e+]+/it \(threshold 0.000125\), ", line) for line in lines), lines
 
 
 CGAL_DATA = Path("/usr/share/doc/libcgal-dev/data.tar.gz")  # Debian's libcgal-demo
