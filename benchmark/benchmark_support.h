@@ -186,16 +186,21 @@ inline bool read_base_mesh(const Arguments& arguments, Mesh& base, std::string& 
   return false;
 }
 
-// Peak resident memory of the process in bytes, and its reset (Linux: /proc/self).
-inline double peak_memory_bytes()
+// The process's memory in bytes as /proc/self/status gives it (Linux): a field such as "VmHWM:".
+inline double process_memory_bytes(const std::string& field)
 {
   std::ifstream status("/proc/self/status");
   std::string line;
   while(std::getline(status, line))
-    if(line.rfind("VmHWM:", 0) == 0)
-      return 1024 * std::stod(line.substr(6));
+    if(line.rfind(field, 0) == 0)
+      return 1024 * std::stod(line.substr(field.size()));
   return 0;
 }
+
+// Peak resident memory of the process in bytes, the memory resident now, and the peak's reset.
+inline double peak_memory_bytes() { return process_memory_bytes("VmHWM:"); }
+
+inline double resident_memory_bytes() { return process_memory_bytes("VmRSS:"); }
 
 inline void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
 

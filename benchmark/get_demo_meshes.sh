@@ -1,9 +1,10 @@
 #!/bin/bash
 # Fetches the CGAL demo meshes that fairing_accuracy measures (femur, camel, bull, lion-head,
 # homer, armadillo) and the CAD parts that fairing_features measures (fandisk, joint, blade,
-# part, dragknob, anchor, cube-meshed) from Debian's libcgal-demo package (data/meshes
-# in /usr/share/doc/libcgal-dev/data.tar.gz), into DIR (default: cgal_demo_data in the current
-# folder, which is where a build folder's benchmarks look).
+# part, dragknob, anchor, cube-meshed), and the real scans that point_set_scans and the
+# manual's point set figure read (kitten, oni, hippo, building, of data/points_3), from Debian's
+# libcgal-demo package (in /usr/share/doc/libcgal-dev/data.tar.gz), into DIR (default:
+# cgal_demo_data in the current folder, which is where a build folder's benchmarks look).
 #
 #   get_demo_meshes.sh [DIR]
 set -euo pipefail
@@ -19,4 +20,8 @@ mkdir -p "$dir/meshes"
 for name in femur camel bull lion-head homer armadillo fandisk joint blade part dragknob anchor cube-meshed; do
   cp "$(find "$work" -path "*/data/meshes/$name.off" | head -1)" "$dir/meshes/"
 done
-echo "CGAL demo meshes in $dir/meshes"
+mkdir -p "$dir/points_3"
+for name in kitten.xyz oni.pwn hippo1.ply building.ply; do
+  cp "$(find "$work" -path "*/data/points_3/$name" | head -1)" "$dir/points_3/"
+done
+echo "CGAL demo meshes in $dir/meshes, scans in $dir/points_3"

@@ -16,6 +16,7 @@
 // Without meshes: CGAL's demo meshes (benchmark/get_demo_meshes.sh) and the bundled ones.
 
 #include "benchmark_support.h"
+#include "point_samples.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
 #include <CGAL/Polygon_mesh_processing/estimate_noise_level_of_points.h>
@@ -51,56 +52,6 @@ struct Shape
   Mesh mesh;
   double radius = 0;
 };
-
-// `n` points on `mesh`, uniform by area.
-std::vector<Point> sample(const Mesh& mesh, std::size_t n, unsigned seed)
-{
-  std::vector<std::array<Point, 3> > triangles;
-  std::vector<double> areas;
-  for(auto f : faces(mesh))
-  {
-    std::array<Point, 3> t;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-      t[std::size_t(k++)] = mesh.point(v);
-    triangles.push_back(t);
-    areas.push_back(std::sqrt(CGAL::squared_area(t[0], t[1], t[2])));
-  }
-  std::mt19937 random(seed);
-  std::discrete_distribution<std::size_t> pick(areas.begin(), areas.end());
-  std::uniform_real_distribution<double> unit(0, 1);
-  std::vector<Point> points;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const auto& t = triangles[pick(random)];
-    double a = unit(random), b = unit(random);
-    if(a + b > 1)
-      a = 1 - a, b = 1 - b;
-    points.push_back(t[0] + a * (t[1] - t[0]) + b * (t[2] - t[0]));
-  }
-  return points;
-}
-
-std::vector<Point> add_gaussian_noise(std::vector<Point> points, double sigma, unsigned seed)
-{
-  std::mt19937 random(seed);
-  std::normal_distribution<double> normal(0, sigma);
-  for(Point& p : points)
-    p = p + Vector(normal(random), normal(random), normal(random));
-  return points;
-}
-
-// Each point moved back into the ball of radius `eps` around its input.
-void clamp(std::vector<Point>& points, const std::vector<Point>& input, double eps)
-{
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    const Vector d = points[i] - input[i];
-    const double length = std::sqrt(d.squared_length());
-    if(length > eps)
-      points[i] = input[i] + d * (eps / length);
-  }
-}
 
 struct Figures
 {

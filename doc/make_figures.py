@@ -214,6 +214,7 @@ def main():
 
     label_map_figure(build)
     creases_figure(build)
+    point_set_figure(build)
 
 
 def face_normals(points, faces):
@@ -281,6 +282,69 @@ def label_map_figure(build):
         draw(ax, np.concatenate(points), np.concatenate(faces), np.concatenate(values), "tab10",
              0, 10, angle, title)
     save(fig, "label_map.png")
+
+
+def pca_normals(points, k=16):
+    """Each point's normal as the least-variance direction of its k nearest neighbours: what
+    shades a point set, and shows its noise as speckle."""
+    from scipy.spatial import cKDTree
+    _, near = cKDTree(points).query(points, k)
+    local = points[near] - points[near].mean(axis=1, keepdims=True)
+    _, vectors = np.linalg.eigh(np.einsum("nki,nkj->nij", local, local))
+    return vectors[:, :, 0]
+
+
+def draw_points(ax, points, values, cmap, vmin, vmax, rotation, title):
+    """Orthographic view along -z after `rotation`, far points drawn first, each shaded by the
+    light from the viewer on its neighbours' plane."""
+    p = (points - points.mean(axis=0)) @ rotation.T
+    order = np.argsort(p[:, 2])
+    shade = 0.3 + 0.7 * np.abs((pca_normals(points) @ rotation.T)[:, 2])
+    colour = plt.get_cmap(cmap)(np.clip((values - vmin) / (vmax - vmin), 0, 1))
+    colour[:, :3] *= shade[:, None]
+    ax.scatter(p[order, 0], p[order, 1], s=1.5, c=colour[order], linewidths=0)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.set_title(title, fontsize=10)
+    return plt.cm.ScalarMappable(norm=matplotlib.colors.Normalize(vmin, vmax), cmap=cmap)
+
+
+def point_set_figure(build):
+    """CGAL's demo scan of the hippo (data/points_3, from benchmark/get_demo_meshes.sh), faired
+    within its estimated noise with its own normals, as the tool fairs it: the scan, and a slab
+    across it seen edge on, as scanned and faired, the faired points coloured by how far they
+    moved."""
+    scan = os.path.join(build, "cgal_demo_data", "points_3", "hippo1.ply")
+    if not os.path.exists(scan):
+        print("point set figure skipped: no %s (benchmark/get_demo_meshes.sh %s)"
+              % (scan, os.path.join(build, "cgal_demo_data")))
+        return
+    sys.path.insert(0, os.path.join(build, "python"))
+    import cgal_constrained_fairing as cf
+    P, N = cf.read_points(scan)
+    eps = cf.estimate_noise_level(P)
+    Q, report = cf.fair_points(P, eps, N)
+    deviation = np.linalg.norm(Q - P, axis=1)
+    print("point set figure: %d points, eps %.6g (estimated), largest move %.6g, %d isolated, %s"
+          % (len(P), eps, deviation.max(), report.number_of_isolated_points, report.status))
+    assert (deviation <= eps).all()
+    angle = view(150, 15)
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5), gridspec_kw={"width_ratios": [1, 1.2, 1.2]})
+    draw_points(axes[0], P, np.zeros(len(P)), "Greys", -1, 1, angle, "the scan (%d points)" % len(P))
+    # A slab across the body, seen edge on: the scan's noise is the width of its band.
+    p, q = (P - P.mean(axis=0)) @ angle.T, (Q - P.mean(axis=0)) @ angle.T
+    slab = np.abs(p[:, 0] - np.median(p[:, 0])) < 4 * eps
+    axes[0].scatter(p[slab, 0], p[slab, 1], s=2, c="#d62728", linewidths=0)
+    axes[1].scatter(p[slab, 2], p[slab, 1], s=6, linewidths=0, c="0.3")
+    axes[2].scatter(q[slab, 2], q[slab, 1], s=6, linewidths=0, c=deviation[slab], cmap="magma", vmin=0, vmax=eps)
+    for ax, title in ((axes[1], "the slab's points as scanned"), (axes[2], "faired, coloured by the distance moved")):
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title(title, fontsize=10)
+    mappable = plt.cm.ScalarMappable(norm=matplotlib.colors.Normalize(0, eps), cmap="magma")
+    fig.colorbar(mappable, ax=axes, shrink=0.6, label="distance moved (ends at eps)")
+    save(fig, "hippo_points.png")
 
 
 if __name__ == "__main__":

@@ -1,11 +1,18 @@
-# Reads back an OFF file that an example wrote: it must be an OFF file with the vertex and face
-# counts of the mesh it was made from, and not that mesh's file unchanged.
-#   cmake -DWRITTEN=FILE -DFROM=FILE -P check_off_file.cmake
+# Reads back a file that an example wrote: an OFF file with the vertex and face counts of the
+# mesh it was made from, or a point file (.xyz, .pwn) with as many points as the one it was made
+# from; and not that file unchanged.
+#   cmake -DWRITTEN=FILE -DFROM=FILE -P check_written_file.cmake
 
-# The counts "OFF V F E" of an OFF file, comments left out.
-function(off_counts file out)
+# The counts of FILE: "OFF V F E" of an OFF file, comments left out, or the lines of a point file.
+function(element_counts file out)
   if(NOT EXISTS "${file}")
     message(FATAL_ERROR "${file} was not written")
+  endif()
+  if(file MATCHES "\\.(xyz|pwn)$")
+    file(STRINGS "${file}" lines REGEX "[0-9]")
+    list(LENGTH lines count)
+    set(${out} "${count} points" PARENT_SCOPE)
+    return()
   endif()
   file(READ "${file}" head LIMIT 4096)
   string(REGEX REPLACE "#[^\n]*" "" head "${head}")
@@ -15,8 +22,8 @@ function(off_counts file out)
   set(${out} "${CMAKE_MATCH_1} vertices, ${CMAKE_MATCH_2} faces" PARENT_SCOPE)
 endfunction()
 
-off_counts("${WRITTEN}" written)
-off_counts("${FROM}" from)
+element_counts("${WRITTEN}" written)
+element_counts("${FROM}" from)
 if(NOT written STREQUAL from)
   message(FATAL_ERROR "${WRITTEN} has ${written}, ${FROM} ${from}")
 endif()

@@ -147,7 +147,8 @@ def fair(vertices: ArrayLike, faces: ArrayLike, epsilon: float, *,
         number (from 1) and the objective reached; returning ``False`` stops the run, and the
         result is that iterate (status ``CANCELLED``). An exception it raises stops the run and
         is raised. ``True`` shows a progress bar (tqdm, when installed; a line on stderr
-        otherwise).
+        otherwise): the iterations, the energy, and the energy's relative decrease per
+        iteration that the stopping rule measures, beside its threshold.
 
     Returns
     -------

@@ -36,8 +36,9 @@ meshes, by default the points move along their normals (`tangential_motion(true)
 slide too), and the accurate objective (`Constrained_fairing_objective::ACCURATE`) adds a pull
 towards CGAL's jet smoothing of the points (`jet_smooth_point_set()`), projected into the bound.
 
-The normals are the `normal_map`'s if given, else estimated as %CGAL does
-(`jet_estimate_normals()`, then `mst_orient_normals()`); if the `normal_map` is writable, each
+The normals are the `normal_map`'s if given, else estimated as %CGAL does, on the same
+neighbours: the jet fit of `jet_estimate_normals()`, oriented along a minimum spanning tree as
+`mst_orient_normals()` orients (in a tenth of its memory); if the `normal_map` is writable, each
 point's normal at the result is written to it, oriented as the input's. A point with no usable
 neighbourhood (farther from its k-th neighbour than 4 times the median of that distance, or whose
 neighbours leave no triangle around it) stays where it is, and is counted in
