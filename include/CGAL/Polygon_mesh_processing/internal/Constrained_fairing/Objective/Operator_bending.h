@@ -68,7 +68,8 @@ public:
   {
     CGAL_precondition(m_L.rows() == m_L.cols() && m_L.rows() == X0.rows() &&
                       (m_normals.rows() == X0.rows() || m_normals.rows() == 0));
-    const Eigen::VectorXd M = masses_at(X0);
+    Eigen::VectorXd M;
+    masses_at(X0, M);
     m_stiffness = Eigen::VectorXd::Zero(m_L.rows());
     for(Eigen::Index j = 0; j < m_L.outerSize(); ++j)
       for(Laplacian::InnerIterator it(m_L, j); it; ++it)
@@ -80,10 +81,10 @@ public:
 
   double value(const Points& X) override
   {
-    m_curvature = m_L * X;
+    m_curvature.noalias() = m_L * X;
     if(m_normals.rows() > 0)
       m_curvature = m_normals.array().colwise() * (m_curvature.array() * m_normals.array()).rowwise().sum();
-    m_M = masses_at(X);
+    masses_at(X, m_M);
     double sum = 0;
     for(Eigen::Index i = 0; i < X.rows(); ++i)
       if(m_M[i] != 0)
@@ -96,15 +97,18 @@ public:
   double add_gradient(const Points& X, Points& G, Stiffness_and_reach* scales) override
   {
     const double energy = value(X);
-    Points scaled = Points::Zero(X.rows(), 3);
-    Eigen::VectorXd share = Eigen::VectorXd::Zero(X.rows());
+    Points& scaled = m_scaled;
+    Eigen::VectorXd& share = m_share;
+    scaled.setZero(X.rows(), 3);
+    share.setZero(X.rows());
     for(Eigen::Index i = 0; i < X.rows(); ++i)
       if(m_M[i] != 0)
       {
         point(scaled, i) = point(m_curvature, i) / m_M[i];
         share[i] = point(scaled, i).squaredNorm() / 3;
       }
-    G += 2 * (m_Lt * scaled);
+    m_product.noalias() = m_Lt * scaled; // as a temporary would hold it, bit for bit
+    G += 2 * m_product;
     for(const Mass_triangle& t : m_triangles)
     {
       const Eigen::Vector3d a = point(X, t.corners[0]), b = point(X, t.corners[1]), c = point(X, t.corners[2]);
@@ -126,15 +130,14 @@ public:
   bool is_bending() const override { return true; }
 
 private:
-  Eigen::VectorXd masses_at(const Points& X) const
+  void masses_at(const Points& X, Eigen::VectorXd& M) const
   {
-    Eigen::VectorXd M = Eigen::VectorXd::Zero(X.rows());
+    M.setZero(X.rows());
     for(const Mass_triangle& t : m_triangles)
     {
       const Eigen::Vector3d a = point(X, t.corners[0]), b = point(X, t.corners[1]), c = point(X, t.corners[2]);
       M[t.owner] += (b - a).cross(c - a).norm() / 6;
     }
-    return M;
   }
 
   Laplacian m_L;
@@ -144,6 +147,9 @@ private:
   Eigen::VectorXd m_stiffness; // a bound of the Hessian's diagonal of the quadratic part at X0
   Points m_curvature; // (L X)_i or its part along n_i, at the last value()
   Eigen::VectorXd m_M;
+  Points m_scaled;         // the gradient's c_i / M_i, each mass's share of it, and L^T of it:
+  Eigen::VectorXd m_share; // kept from one evaluation to the next, not allocated in each
+  Points m_product;
 };
 
 } // namespace Constrained_fairing
