@@ -9,10 +9,13 @@
 
 #include "benchmark_support.h"
 
+#include <CGAL/bounding_box.h>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace benchmark {
@@ -65,6 +68,29 @@ inline void clamp(std::vector<Point>& points, const std::vector<Point>& input, d
     if(length > eps)
       points[i] = input[i] + d * (eps / length);
   }
+}
+
+// The large point set of the scaling benchmarks: the mesh the arguments name (the bundled bunny
+// by default), `--points` of it (`default_points` without) sampled, Gaussian noise of sigma = 1 %
+// of the bounding sphere's radius.
+struct Noisy_sample
+{
+  Mesh mesh;
+  std::string name;
+  std::vector<Point> noisy;
+  double sigma = 0;
+};
+
+inline bool read_noisy_sample(const Arguments& arguments, const std::string& default_points, Noisy_sample& sample_set)
+{
+  if(!read_base_mesh(arguments, sample_set.mesh, sample_set.name))
+    return false;
+  const std::size_t n = std::stoul(arguments.option("points", default_points));
+  const Mesh& mesh = sample_set.mesh;
+  const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
+  sample_set.sigma = 0.01 * std::sqrt(CGAL::squared_distance(box.min(), box.max())) / 2;
+  sample_set.noisy = add_gaussian_noise(sample(mesh, n, 1), sample_set.sigma, 3);
+  return true;
 }
 
 } // namespace benchmark

@@ -22,7 +22,6 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/bounding_box.h>
 #include <CGAL/jet_smooth_point_set.h>
 
 #include <chrono>
@@ -72,17 +71,15 @@ int main(int argc, char* argv[])
 {
   const Arguments arguments(argc, argv);
   const Thread_limit thread_limit(arguments);
-  Mesh mesh;
-  std::string name;
-  if(!read_base_mesh(arguments, mesh, name))
+  Noisy_sample sample_set;
+  if(!read_noisy_sample(arguments, "200000", sample_set))
     return 1;
-  const std::size_t n = std::stoul(arguments.option("points", "200000"));
-  const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
-  const double sigma = 0.01 * std::sqrt(CGAL::squared_distance(box.min(), box.max())) / 2;
-  const std::vector<Point> noisy = add_gaussian_noise(sample(mesh, n, 1), sigma, 3);
+  const std::vector<Point>& noisy = sample_set.noisy;
+  const double sigma = sample_set.sigma;
+  const Mesh& mesh = sample_set.mesh;
   Tree clean(faces(mesh).first, faces(mesh).second, mesh);
   clean.accelerate_distance_queries();
-  std::cout << machine_description() << "\n" << n << " points on " << name
+  std::cout << machine_description() << "\n" << noisy.size() << " points on " << sample_set.name
             << ", sigma = 1 % of the radius, eps = 3 sigma; distances to the clean mesh, RMS\n"
             << "noisy input: " << rms_distance(clean, noisy) / sigma << " sigma" << std::endl;
 

@@ -16,7 +16,6 @@
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing_of_points.h>
 
-#include <CGAL/bounding_box.h>
 #include <CGAL/jet_smooth_point_set.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -92,15 +91,12 @@ int main(int argc, char* argv[])
 {
   const Arguments arguments(argc, argv);
   const Thread_limit thread_limit(arguments);
-  Mesh mesh;
-  std::string name;
-  if(!read_base_mesh(arguments, mesh, name))
+  Noisy_sample sample_set;
+  if(!read_noisy_sample(arguments, "1000000", sample_set))
     return 1;
-  const std::size_t n = std::stoul(arguments.option("points", "1000000"));
-  const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
-  const double sigma = 0.01 * std::sqrt(CGAL::squared_distance(box.min(), box.max())) / 2, eps = 3 * sigma;
-  const std::vector<Point> noisy = add_gaussian_noise(sample(mesh, n, 1), sigma, 3);
-  std::cout << machine_description() << "\n" << n << " points on " << name << ", sigma = 1 % of the radius, eps = 3 sigma, median of "
+  const std::vector<Point>& noisy = sample_set.noisy;
+  const double eps = 3 * sample_set.sigma;
+  std::cout << machine_description() << "\n" << noisy.size() << " points on " << sample_set.name << ", sigma = 1 % of the radius, eps = 3 sigma, median of "
             << arguments.runs << " runs\n";
 
   const double jet_seconds = median_seconds(arguments.runs, [&] {
