@@ -4,9 +4,10 @@
 // The default call on one mesh file as a C++ program makes it: the baseline against which
 // benchmark/python_batch.py measures the Python module on the same arrays.
 //
-//   fairing_call --write-case OUT [MESH] [--level L]
+//   fairing_call --write-case OUT [MESH] [--level L] [--clean CLEAN]
 //       writes fairing_scaling's case: MESH (default: the bundled bunny) Loop subdivided L
-//       times (default 1: 301,632 triangles), with seeded noise of 0.25 h
+//       times (default 1: 301,632 triangles), with seeded noise of 0.25 h; CLEAN gets the
+//       subdivided mesh before the noise
 //   fairing_call IN [--runs N] [--output OUT]
 //       reads IN as the tool does, fairs it within 0.25 h (h its mean edge length), and prints
 //       on one line the median times of N runs (default 1) of the call on the mesh and of the
@@ -40,7 +41,15 @@ int main(int argc, char* argv[])
     std::string name;
     if(!benchmark::read_base_mesh(arguments, base, name))
       return EXIT_FAILURE;
-    benchmark::make_noisy_case(base, static_cast<unsigned int>(std::stoul(arguments.option("level", "1"))), noisy);
+    const auto level = static_cast<unsigned int>(std::stoul(arguments.option("level", "1")));
+    benchmark::make_noisy_case(base, level, noisy);
+    const std::string clean_file = arguments.option("clean", "");
+    if(!clean_file.empty())
+    {
+      CGAL::Subdivision_method_3::Loop_subdivision(base, CGAL::parameters::number_of_iterations(level));
+      if(!CGAL::IO::write_polygon_mesh(clean_file, base, CGAL::parameters::stream_precision(17)))
+        return EXIT_FAILURE;
+    }
     return CGAL::IO::write_polygon_mesh(case_file, noisy, CGAL::parameters::stream_precision(17)) ? EXIT_SUCCESS
                                                                                                   : EXIT_FAILURE;
   }
@@ -51,7 +60,8 @@ int main(int argc, char* argv[])
   Mesh mesh;
   if(arguments.positional.empty() || !CGAL::IO::read_polygon_soup(arguments.positional[0], points, triangles))
   {
-    std::cerr << "usage: fairing_call IN [--runs N] [--output OUT] | fairing_call --write-case OUT [MESH] [--level L]"
+    std::cerr << "usage: fairing_call IN [--runs N] [--output OUT] | fairing_call --write-case OUT [MESH] [--level L] "
+                 "[--clean CLEAN]"
               << std::endl;
     return EXIT_FAILURE;
   }

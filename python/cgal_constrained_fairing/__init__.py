@@ -14,7 +14,9 @@ K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy a
   .npy file;
 - `fair_files` (module `cgal_constrained_fairing.batch`) fairs many files, meshes, point sets
   and label maps, on a Dask cluster, also from the command line:
-  ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``.
+  ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``;
+- `fair_tiled` (module `cgal_constrained_fairing.tiles`) fairs one mesh too large for one
+  process as tiles on a Dask cluster: ``python3 -m cgal_constrained_fairing.tiles IN OUT``.
 
 Example
 -------
@@ -36,15 +38,18 @@ __version__ = "0.1.0"
 
 __all__ = [
     "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "MeshProperties", "Report", "Status", "estimate_noise_level", "fair",
-    "fair_files", "fair_interfaces", "fair_points", "PointsReport", "label_surfaces", "max_threads", "mean_edge_length",
+    "fair_files", "fair_interfaces", "fair_tiled", "fair_points", "PointsReport", "label_surfaces", "max_threads", "mean_edge_length",
     "is_point_set_file", "read_label_map", "read_mesh", "read_points", "set_max_threads", "write_mesh",
     "write_points",
 ]
 
 
 def __getattr__(name):
-    # The batch needs Dask, imported only when it is used.
+    # The batch and the tiles need Dask, imported only when they are used.
     if name == "fair_files":
         from .batch import fair_files
         return fair_files
+    if name == "fair_tiled":
+        from .tiles import fair_tiled
+        return fair_tiled
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/label_map_epsilon.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Tile_fairing.h>
 
 #include "front_end/Epsilon_grammar.h"
 #include "front_end/Label_map_file.h"
@@ -54,6 +55,7 @@
 namespace py = pybind11;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace CFP = PMP::constrained_fairing_parameters;
+namespace CF = PMP::internal::Constrained_fairing;
 namespace FE = Constrained_fairing_front_end;
 
 namespace {
@@ -460,6 +462,39 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
     report["feature_edges"] = used;
   }
   return report;
+}
+
+// One tile of fair_tiled(): the owned vertices faired from `current`, the ghosts frozen there
+// (Tile_fairing.h), with the settings fair() takes; `max_iterations` caps this sweep's descent,
+// `from_start` starts the owned vertices at the smoothed start.
+py::dict fair_tile(const Float_array& vertices, const Float_array& current, const Index_array& faces,
+                   const Mask_array& owned, const Options& options, std::size_t max_iterations, bool from_start)
+{
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
+  const Fairing_outputs outputs(n);
+  const PMP::Constrained_fairing_settings settings = options.settings();
+  PMP::Constrained_fairing_result result;
+  {
+    py::gil_scoped_release release;
+    Mesh mesh;
+    if(const PMP::Constrained_fairing_input_error error = build_mesh(vertices, faces, mesh))
+      result = rejected(error);
+    else
+    {
+      CF::Tile_state tile{CF::Points(Eigen::Index(n), 3), std::vector<bool>(n), max_iterations, from_start};
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        CF::point(tile.current, i) = Eigen::Vector3d(current.data() + 3 * i);
+        tile.owned[i] = owned.data()[i];
+      }
+      const auto np = CFP::vertex_deviation_map(
+        Array_map<double, vertex_descriptor>{outputs.deviation_data},
+        CFP::vertex_at_bound_map(Array_map<bool, vertex_descriptor>{outputs.at_bound_data}));
+      result = CF::fair_tile(mesh, options.epsilon, tile, CFP::fairing_settings(settings, np));
+      copy_points(mesh, outputs.vertex_data);
+    }
+  }
+  return report_of(result, outputs);
 }
 
 using Label = std::int64_t;
@@ -1012,6 +1047,8 @@ void bind_fairing(py::module_& m)
   m.def("fair", &fair, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("tolerance"),
         py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("feature_edges"),
         py::arg("progress"));
+  m.def("fair_tile", &fair_tile, py::arg("vertices"), py::arg("current"), py::arg("faces"), py::arg("owned"),
+        py::arg("options"), py::arg("max_iterations"), py::arg("from_start"));
   m.def(
     "mean_edge_length",
     [](const Float_array& vertices, const Index_array& faces) {

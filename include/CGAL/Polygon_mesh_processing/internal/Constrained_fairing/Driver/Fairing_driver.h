@@ -118,7 +118,7 @@ void fair_within(Input& input, const Part& part, const std::vector<Index>& rank,
   }
   const std::vector<bool> sliding = input.sliding_points(part);
   Fairing_problem<Bound, SparseLinearSolver> problem(
-    Built_problem<Bound>{mesh, bound, moving, sliding, X0, energy, anchor, sliver_threshold}, settings, solver);
+    Built_problem<Bound>{mesh, bound, moving, sliding, X0, rank, energy, anchor, sliver_threshold}, settings, solver);
 
   // fair
   Points X;

@@ -43,6 +43,7 @@ struct Built_problem
   const std::vector<bool>& moving;
   const std::vector<bool>& sliding;
   const Points& X0;         // the input points, in the solver's order
+  const std::vector<Index>& rank; // the solver's place of the input's k-th vertex
   Fairing_objective& energy;
   const Points& anchor;     // the accurate objective's, else empty
   double sliver_threshold;  // the input's

@@ -1,0 +1,179 @@
+#!/usr/bin/env python3
+"""One mesh faired as tiles on Dask (``fair_tiled``) against the in-core call, in one process.
+
+    PYTHONPATH=build/python /usr/bin/python3 benchmark/tiled_fairing.py [--build build]
+        [--levels 2 3] [--runs 1] [--workers 2] [--worker-memory FRACTION] [--mesh MESH]
+
+For each level L, ``benchmark/fairing_call --write-case`` writes the bundled bunny (or MESH)
+Loop subdivided L times with seeded noise of 0.25 h (binary PLY) and the clean subdivided mesh;
+epsilon is 0.25 h. The in-core call ``fair()`` runs in this process on all threads; then
+``fair_tiled`` on a LocalCluster of ``--workers`` single-threaded processes, each with a memory
+limit of FRACTION (default 0.5) times what the in-core call needs (about 340 bytes per
+triangle), so that no worker could hold the whole mesh's fairing, the tiles sized to half of
+it. Printed per level: both times (medians) and their ratio; the tiled result against the
+in-core one (RMS and largest vertex distance in epsilon, and the 99th percentile); against the
+clean mesh for both, the RMS distance along the clean vertex normals (% of epsilon) and the
+mean angle between corresponding face normals, and the tiled result's normal error within 3
+rings of a tile border against the tiles' interiors; the bound, the faces, each worker's peak
+memory against its limit, the sweeps and their motions. The CPU model and the threads are
+printed with the figures.
+"""
+
+import argparse
+import os
+import platform
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import cgal_constrained_fairing as cf
+from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, fair_tiled
+
+IN_CORE_BYTES_PER_TRIANGLE = 340
+
+
+def cpu_model() -> str:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown CPU"
+
+
+def write_case(build: Path, level: int, mesh, folder: Path):
+    noisy, clean = folder / f"noisy_{level}.ply", folder / f"clean_{level}.ply"
+    command = [str(build / "benchmark" / "fairing_call"), "--write-case", str(noisy),
+               "--level", str(level), "--clean", str(clean)]
+    if mesh:
+        command.insert(3, mesh)
+    subprocess.run(command, check=True)
+    return noisy, clean
+
+
+def vertex_normals(V, F):
+    N = np.zeros_like(V)
+    n = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
+    for c in range(3):
+        np.add.at(N, F[:, c], n)
+    return N / np.maximum(np.linalg.norm(N, axis=1, keepdims=True), 1e-300)
+
+
+def face_normal_angles(V, clean, F):
+    def unit(X):
+        n = np.cross(X[F[:, 1]] - X[F[:, 0]], X[F[:, 2]] - X[F[:, 0]])
+        return n / np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
+    return np.degrees(np.arccos(np.clip((unit(V) * unit(clean)).sum(axis=1), -1, 1)))
+
+
+def rings_from_border(tile, F, most=3):
+    """Each vertex's rings to the nearest vertex with a neighbour in another tile (most+1 if
+    farther)."""
+    edges = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
+    rings = np.full(len(tile), most + 1)
+    front = np.zeros(len(tile), bool)
+    front[edges[tile[edges[:, 0]] != tile[edges[:, 1]]].ravel()] = True
+    for r in range(most + 1):
+        rings[front & (rings > r)] = r
+        grown = np.zeros(len(tile), bool)
+        grown[edges[front[edges[:, 0]] | front[edges[:, 1]]].ravel()] = True
+        front = grown
+    return rings
+
+
+def quality(W, clean, normals, F, eps):
+    along = ((W - clean) * normals).sum(axis=1)
+    return 100 * np.sqrt(np.mean(along ** 2)) / eps, face_normal_angles(W, clean, F)
+
+
+def in_core(V, F, eps, runs):
+    times = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        W, report = cf.fair(V, F, eps)
+        times.append(time.perf_counter() - start)
+    return W, report, statistics.median(times)
+
+
+def tiled(noisy, out, eps, runs, workers, limit):
+    import distributed
+    times = []
+    for _ in range(runs):
+        cluster = distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
+                                           memory_limit=limit, dashboard_address=None)
+        with distributed.Client(cluster) as client:
+            start = time.perf_counter()
+            report = fair_tiled(noisy, out, eps, client=client, tile_memory=limit // 2)
+            times.append(time.perf_counter() - start)
+            peaks = client.run(lambda: resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024)
+        cluster.close()
+    return report, statistics.median(times), peaks
+
+
+def measure(args, level, folder):
+    noisy, clean_path = write_case(args.build, level, args.mesh, folder)
+    V, F = cf.read_mesh(noisy)
+    clean, _ = cf.read_mesh(clean_path)
+    eps = 0.25 * cf.mean_edge_length(clean, F)
+    W, whole, t_in = in_core(V, F, eps, args.runs)
+    limit = int(args.worker_memory * IN_CORE_BYTES_PER_TRIANGLE * len(F))
+    out = folder / f"tiled_{level}.ply"
+    report, t_tiled, peaks = tiled(noisy, out, eps, args.runs, args.workers, limit)
+    T, F_out = cf.read_mesh(out)
+    print(f"level {level}: {len(V)} vertices, {len(F)} triangles, eps 0.25 h = {eps:.6g}; "
+          f"medians of {args.runs} runs")
+    print(f"  in-core: {t_in:.2f} s, {whole.number_of_iterations} iterations; tiled: "
+          f"{t_tiled:.2f} s ({t_tiled / t_in:.3f} times), {report!r}")
+    print(f"  tiles: {len(report.colour)}, vertices with ghosts {report.tile_sizes[:, 0].min()} "
+          f"to {report.tile_sizes[:, 0].max()}; sweep motions (RMS, eps) "
+          f"{[round(m, 4) for m in report.motion]}, largest {[round(m, 3) for m in report.largest_motion]}")
+    d = np.linalg.norm(T - W, axis=1) / eps
+    print(f"  tiled against in-core: RMS {np.sqrt(np.mean(d ** 2)):.4f} eps, largest {d.max():.4f} "
+          f"eps, 99th percentile {np.percentile(d, 99):.4f} eps")
+    normals = vertex_normals(clean, F)
+    (rms_in, angle_in), (rms_t, angle_t) = (quality(X, clean, normals, F, eps) for X in (W, T))
+    print(f"  against the clean mesh: RMS distance along its normals {rms_in:.3f} / {rms_t:.3f} % of "
+          f"eps (in-core / tiled, ratio {rms_t / rms_in:.4f}), mean normal error {angle_in.mean():.4f} "
+          f"/ {angle_t.mean():.4f} deg (ratio {angle_t.mean() / angle_in.mean():.4f})")
+    near = rings_from_border(report.tile, F)[F].min(axis=1) <= 3
+    if near.any() and (~near).any():
+        print(f"  tiled normal error within 3 rings of a tile border {angle_t[near].mean():.4f} deg, "
+              f"interiors {angle_t[~near].mean():.4f} deg (ratio "
+              f"{angle_t[near].mean() / angle_t[~near].mean():.4f}; in-core there "
+              f"{angle_in[near].mean():.4f} / {angle_in[~near].mean():.4f})")
+    bound = bool((np.linalg.norm(T - V, axis=1) <= eps).all())
+    print(f"  bound holds: {bound}; faces identical: {bool(np.array_equal(F_out, F))}; worker peaks "
+          f"{sorted(round(p / 2 ** 20) for p in peaks.values())} MiB against a limit of "
+          f"{limit / 2 ** 20:.0f} MiB (in-core needs about {IN_CORE_BYTES_PER_TRIANGLE * len(F) / 2 ** 20:.0f})")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", type=Path, default=Path("build"))
+    parser.add_argument("--levels", type=int, nargs="+", default=[2, 3])
+    parser.add_argument("--runs", type=int, default=1)
+    parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--worker-memory", type=float, default=0.5)
+    parser.add_argument("--mesh", default="")
+    args = parser.parse_args()
+    if not (args.build / "benchmark" / "fairing_call").exists():
+        print(f"skipped: {args.build}/benchmark/fairing_call is not built")
+        return 0
+    print(f"{cpu_model()}, {os.cpu_count()} CPUs; in-core on {cf.max_threads()} threads, tiles on "
+          f"{args.workers} workers of 1 thread; tiles sized at {BYTES_PER_TRIANGLE} bytes per triangle")
+    with tempfile.TemporaryDirectory() as folder:
+        for level in args.levels:
+            measure(args, level, Path(folder))
+            sys.stdout.flush()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

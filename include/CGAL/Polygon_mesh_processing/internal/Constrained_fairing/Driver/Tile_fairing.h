@@ -1,0 +1,91 @@
+// Copyright (c) 2026  The CGAL Constrained Fairing authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One tile of a mesh too large for one process: the triangles around the vertices the tile
+// owns, out to rings of its neighbours' vertices (the ghosts). The smoothed start and the
+// normals along which the vertices move are made from the tile's input points, as the whole
+// call makes them (Fairing_problem::start): a smoothing step reaches one ring farther, so with
+// more rings than steps they are the whole call's at the owned vertices. The owned vertices
+// then descend from where the earlier sweeps left them, every ghost frozen there
+// (Fairing_problem::fair_part): each tile's descent lowers the whole's objective within the
+// whole's bound, so that sweeps over tiles that share no hinge descend it as one problem does
+// (a Schwarz method).
+
+#ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_TILE_FAIRING_H
+#define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_TILE_FAIRING_H
+
+#include <CGAL/Polygon_mesh_processing/Constrained_fairing_result.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Fairing_driver.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parameters/read_named_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Triangle_meshes/Mesh_input.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Constrained_fairing {
+
+// Where a tile's vertices are now, in the order of vertices(tmesh), and which of them it owns.
+struct Tile_state
+{
+  Points current;             // a row per vertex, within its bound about the input point
+  std::vector<bool> owned;    // the vertices that descend; the others are ghosts
+  std::size_t max_iterations; // of this sweep's descent
+  bool from_start;            // the owned vertices descend from the smoothed start instead
+};
+
+// The owned vertices of `tmesh` (whose points are the input's) faired from `tile.current` (or
+// the smoothed start), the ghosts frozen at `tile.current`; the mesh's points then hold the
+// tile's new state. With no iteration, the owned vertices get the smoothed start: the first pass
+// over the tiles puts the whole mesh where the whole call starts. The named parameters
+// are those of constrained_fairing() that a whole mesh takes (no face range, no creases: a
+// part's objective has no crease term).
+template <typename TriangleMesh, typename NamedParameters>
+Constrained_fairing_result fair_tile(TriangleMesh& tmesh, double epsilon, const Tile_state& tile,
+                                     const NamedParameters& np)
+{
+  CGAL_precondition(std::size_t(tile.current.rows()) == num_vertices(tmesh));
+  CGAL_precondition(tile.owned.size() == num_vertices(tmesh));
+  using Faces = std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>;
+  const auto vpm = get_property_map(CGAL::vertex_point, tmesh);
+  Mesh_input<TriangleMesh, std::remove_const_t<decltype(vpm)>, Faces> input(tmesh, vpm, nullptr);
+  Constrained_fairing_result descent;
+  descent.status = Constrained_fairing_status::CONVERGED;
+  const auto step = [&](auto& problem, Points& X, Constrained_fairing_result& result) {
+    problem.start(X, result);
+    const std::vector<Index>& rank = problem.built().rank;
+    std::vector<Index> part;
+    for(std::size_t k = 0; k < rank.size(); ++k)
+    {
+      if(tile.owned[k])
+        part.push_back(rank[k]);
+      if(!tile.owned[k] || !tile.from_start)
+        point(X, rank[k]) = point(tile.current, k);
+    }
+    std::sort(part.begin(), part.end());
+    if(tile.max_iterations > 0)
+      descent = problem.fair_part(part, Iteration_callback(read_iteration_callback(np)), X, tile.max_iterations);
+    problem.finish(X, result);
+    result.status = descent.status;
+    result.message = descent.message;
+    result.number_of_iterations = descent.number_of_iterations;
+    result.number_of_energy_evaluations = descent.number_of_energy_evaluations;
+    result.number_of_folded_faces = descent.number_of_folded_faces;
+  };
+  return run_fairing_phases(input, epsilon, read_fairing_settings(np), read_vertex_maps(np),
+                            read_sparse_linear_solver(np), step);
+}
+
+} // namespace Constrained_fairing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_TILE_FAIRING_H

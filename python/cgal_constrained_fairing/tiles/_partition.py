@@ -1,0 +1,153 @@
+"""Spatial tiles of a mesh: which vertices each tile owns, its rings of ghosts, its colour.
+
+A tile owns the vertices of one cell of a k-d split of the input points (cells of about equal
+counts). Its mesh is the triangles within ``rings`` rings of its owned vertices, found among the
+triangles with a corner in the cell's box grown by a margin, so that a task reads only its
+region of the face array. Two tiles get different colours when one's ghosts within
+`HINGE_RINGS` rings are owned by the other: the descents of tiles of one colour then touch no
+common hinge, and run at once.
+"""
+
+import dataclasses
+from typing import List
+
+import numpy as np
+
+from ._ply_map import BLOCK_ROWS
+
+# The rings around a moving vertex that its hinges reach (their triangles' corners).
+HINGE_RINGS = 2
+
+
+@dataclasses.dataclass
+class Tiles:
+    """The k-d cells: each vertex's tile and each tile's box."""
+
+    tile: np.ndarray    # (n,) int32, each vertex's tile
+    boxes: np.ndarray   # (T, 2, 3): each tile's lower and upper corner
+
+    @property
+    def count(self) -> int:
+        return len(self.boxes)
+
+
+def kd_tiles(points: np.ndarray, count: int) -> Tiles:
+    """`points` split into at least `count` cells of about equal counts, each cut across its
+    widest extent at its median."""
+    tile = np.zeros(len(points), np.int32)
+    cells = [np.arange(len(points))]
+    while len(cells) < count:
+        largest = max(range(len(cells)), key=lambda c: len(cells[c]))
+        members = cells.pop(largest)
+        if len(members) < 2:
+            cells.append(members)
+            break
+        p = points[members]
+        axis = int(np.argmax(p.max(axis=0) - p.min(axis=0)))
+        order = np.argpartition(p[:, axis], len(members) // 2)
+        cells += [members[order[:len(members) // 2]], members[order[len(members) // 2:]]]
+    boxes = np.empty((len(cells), 2, 3))
+    for t, members in enumerate(cells):
+        tile[members] = t
+        p = points[members]
+        boxes[t] = (p.min(axis=0), p.max(axis=0))
+    return Tiles(tile, boxes)
+
+
+def candidate_faces(corners: np.ndarray, points: np.ndarray, box: np.ndarray) -> np.ndarray:
+    """The faces with a corner in `box` ((2, 3)), read a block of the face array at a time."""
+    found = []
+    for begin in range(0, len(corners), BLOCK_ROWS):
+        block = np.asarray(corners[begin:begin + BLOCK_ROWS], np.int64)
+        p = points[block.ravel()].reshape(-1, 3, 3)
+        inside = ((p >= box[0]) & (p <= box[1])).all(axis=2).any(axis=1)
+        found.append(begin + np.flatnonzero(inside))
+    return np.concatenate(found) if found else np.zeros(0, np.int64)
+
+
+@dataclasses.dataclass
+class Tile_mesh:
+    """One tile's triangles, over its vertices (global ids), which vertices it owns, and the
+    owners of its ghosts within `HINGE_RINGS` rings."""
+
+    vertices: np.ndarray   # (k,) int64, global ids
+    faces: np.ndarray      # (f,) int64 global face ids, in the input's order
+    local_faces: np.ndarray  # (f, 3) int32 into vertices
+    owned: np.ndarray      # (k,) bool
+    near_owners: np.ndarray  # tiles owning vertices within HINGE_RINGS rings
+
+
+class MarginTooSmall(Exception):
+    """The rings left the region searched for triangles."""
+
+
+def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, margin: float) -> Tile_mesh:
+    """Tile `t`'s triangles within `rings` rings of its owned vertices; MarginTooSmall if the
+    rings reach beyond the box grown by `margin`."""
+    box = tiles.boxes[t] + np.array([[-margin], [margin]])
+    faces = candidate_faces(corners, points, box)
+    local = np.asarray(corners[faces] if len(faces) else np.zeros((0, 3)), np.int64)
+    vertices, local = np.unique(local, return_inverse=True)
+    local = local.reshape(-1, 3)
+    owned = tiles.tile[vertices] == t
+    reached = owned.copy()
+    for ring in range(rings):
+        touching = reached[local].any(axis=1)
+        if ring == HINGE_RINGS:
+            near = reached.copy()
+        if ring == rings - 1:
+            inner = reached
+        reached = reached.copy()
+        reached[local[touching].ravel()] = True
+    kept = inner[local].any(axis=1)
+    kept = _closed_fans(local, kept, points[vertices], box)
+    _check_inside(points[vertices][inner], box)
+    used = np.zeros(len(vertices), bool)
+    used[local[kept].ravel()] = True
+    renumber = np.cumsum(used) - 1
+    near_owners = np.unique(tiles.tile[vertices[near & used]])
+    return Tile_mesh(vertices[used], faces[kept], renumber[local[kept]].astype(np.int32),
+                     owned[used], near_owners[near_owners != t])
+
+
+def _closed_fans(local: np.ndarray, kept: np.ndarray, points: np.ndarray, box) -> np.ndarray:
+    """`kept` with the whole fan of each vertex whose kept triangles form more than one fan
+    (a vertex on more than two border edges), so that the tile is a manifold mesh."""
+    for _ in range(64):
+        bad = _split_fan_vertices(local[kept], len(points))
+        if bad.size == 0:
+            return kept
+        _check_inside(points[bad], box)
+        is_bad = np.zeros(len(points), bool)
+        is_bad[bad] = True
+        kept = kept | is_bad[local].any(axis=1)
+    raise MarginTooSmall()
+
+
+def _split_fan_vertices(faces: np.ndarray, n: int) -> np.ndarray:
+    edges = np.sort(np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]]), axis=1)
+    unique, counts = np.unique(edges, axis=0, return_counts=True)
+    border = unique[counts == 1]
+    on_border = np.bincount(border.ravel(), minlength=n)
+    return np.flatnonzero(on_border > 2)
+
+
+def _check_inside(p: np.ndarray, box) -> None:
+    if len(p) and not ((p >= box[0]) & (p <= box[1])).all():
+        raise MarginTooSmall()
+
+
+def colour_tiles(neighbours: List[np.ndarray]) -> np.ndarray:
+    """Greedy colours of the tiles, no two neighbours alike (a tile's neighbours: the tiles
+    owning its near ghosts, taken both ways)."""
+    count = len(neighbours)
+    adjacent = [set() for _ in range(count)]
+    for t, near in enumerate(neighbours):
+        for s in near:
+            adjacent[t].add(int(s))
+            adjacent[int(s)].add(t)
+    colour = np.full(count, -1)
+    for t in sorted(range(count), key=lambda t: -len(adjacent[t])):
+        taken = {colour[s] for s in adjacent[t]}
+        colour[t] = next(c for c in range(count + 1) if c not in taken)
+    return colour

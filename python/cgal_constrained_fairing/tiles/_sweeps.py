@@ -1,0 +1,95 @@
+"""The tasks of a tiled fairing and the sweeps that schedule them on Dask.
+
+Everything a task needs lies in the run's folder (a shared file system on a cluster): the
+input points, the current points, each tile's mesh. A task reads them and writes its owned
+vertices' new points to a file of its own, renamed into place when complete; the client applies
+a colour's files once all its tasks are done. A task run twice (a worker lost, Dask's retry)
+writes the same file, so the result does not depend on the scheduling.
+"""
+
+import os
+from pathlib import Path
+from typing import Any, Dict
+
+import numpy as np
+
+from .. import _core
+from .._fairing import call_options, result_of, set_max_threads
+from . import _partition
+
+# Ghost rings around a tile's owned vertices: one more than the smoothing steps of the start,
+# whose every step reaches a ring farther, and one for the normals there, so that the start and
+# the lines along which the owned vertices move are the whole call's.
+def ghost_rings(smoothing_steps: int) -> int:
+    return max(smoothing_steps + 2, _partition.HINGE_RINGS + 1)
+
+
+def open_array(path: Path, mode: str = "r") -> np.ndarray:
+    return np.lib.format.open_memmap(path, mode=mode)
+
+
+def open_array_new(path: Path, shape, dtype) -> np.ndarray:
+    """A new .npy file of zeros, mapped for writing."""
+    return np.lib.format.open_memmap(path, mode="w+", dtype=dtype, shape=shape)
+
+
+def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]:
+    """Tile `t`'s mesh into the run's folder; its ghosts' owners near enough to share a hinge."""
+    root = Path(folder)
+    points = open_array(root / "input.npy")
+    corners = open_array(root / "faces.npy")
+    tiles = _partition.Tiles(open_array(root / "tile.npy"), np.load(root / "boxes.npy"))
+    while True:
+        try:
+            mesh = _partition.tile_mesh(t, tiles, corners, points, rings, margin)
+            break
+        except _partition.MarginTooSmall:
+            margin *= 2
+    _save(root / "tiles" / f"{t}.npz", vertices=mesh.vertices, faces=mesh.local_faces,
+          owned=mesh.owned)
+    return {"tile": t, "near": mesh.near_owners, "vertices": len(mesh.vertices),
+            "faces": len(mesh.local_faces), "owned": int(mesh.owned.sum())}
+
+
+def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[str, Any],
+              max_iterations: int, threads: int) -> Dict[str, Any]:
+    """Tile `t`'s owned vertices faired from the current points (sweep 0: to the smoothed
+    start), written to the tile's file for `sweep`."""
+    set_max_threads(threads)
+    root = Path(folder)
+    tile = np.load(root / "tiles" / f"{t}.npz")
+    vertices, owned = tile["vertices"], tile["owned"]
+    X0 = np.ascontiguousarray(open_array(root / "input.npy")[vertices])
+    current = np.ascontiguousarray(open_array(root / "state.npy")[vertices])
+    options = call_options(epsilon, **keywords)
+    outcome = _core.fair_tile(X0, current, tile["faces"], owned, options,
+                              0 if sweep == 0 else max_iterations, sweep == 0)
+    W, report = result_of(outcome)
+    moved = np.linalg.norm(W[owned] - current[owned], axis=1)
+    _save(root / "tiles" / f"{t}.sweep{sweep}.npz", points=W[owned],
+          deviation=report.deviation[owned], at_bound=report.at_bound[owned])
+    return {"tile": t, "squared_motion": float(np.square(moved).sum()),
+            "owned": int(owned.sum()), "largest_motion": float(moved.max(initial=0.0)),
+            "iterations": report.number_of_iterations, "status": report.status.value}
+
+
+def apply_tile(folder: Path, t: int, sweep: int) -> None:
+    """Tile `t`'s points of `sweep` into the run's current points, deviations and flags."""
+    tile = np.load(folder / "tiles" / f"{t}.npz")
+    result_path = folder / "tiles" / f"{t}.sweep{sweep}.npz"
+    result = np.load(result_path)
+    rows = tile["vertices"][tile["owned"]]
+    for name, key in (("state", "points"), ("deviation", "deviation"), ("at_bound", "at_bound")):
+        target = open_array(folder / f"{name}.npy", "r+")
+        target[rows] = result[key]
+        target.flush()
+        del target
+    result_path.unlink()
+
+
+def _save(path: Path, **arrays) -> None:
+    # Written whole beside its place, then renamed: a reader never sees half a file.
+    partial = path.with_name(path.name + f".partial-{os.getpid()}")
+    with open(partial, "wb") as f:
+        np.savez(f, **arrays)
+    os.replace(partial, path)

@@ -1,0 +1,147 @@
+"""fair_tiled: one mesh faired as tiles with frozen ghosts on a Dask cluster.
+
+One tile is the in-core call bit for bit (the start and the lines along the normals are the
+whole call's); many tiles keep the bound exactly in double, the faces byte for byte, the
+vertices' properties and order, end their sweeps below 1 % of epsilon, and lower the energy
+from the start; bad requests leave every file as it was and nothing of the run behind.
+"""
+
+import hashlib
+
+import distributed
+import numpy as np
+import pytest
+
+import cgal_constrained_fairing as cf
+from cgal_constrained_fairing.tiles import fair_tiled
+from cgal_constrained_fairing.tiles import _ply_map
+
+from conftest import icosphere, noisy
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def scan(tmp_path_factory):
+    """A noisy sphere of 20,480 triangles as binary PLY with colours and a float property."""
+    V, F = icosphere(5)
+    V = noisy(V, F, 0.25)
+    rng = np.random.default_rng(3)
+    properties = cf.MeshProperties(
+        vertex={"red": rng.integers(0, 256, len(V)).astype(np.uint8),
+                "confidence": rng.random(len(V)).astype(np.float32)},
+        face={"quality": rng.random(len(F)).astype(np.float32)})
+    path = tmp_path_factory.mktemp("scan") / "scan.ply"
+    cf.write_mesh(path, V, F, properties=properties)
+    eps = 0.25 * cf.mean_edge_length(V, F)
+    return path, V, F, properties, eps
+
+
+def digest(path):
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def face_block(path):
+    mapped = _ply_map.map_ply(path)
+    offset, length = mapped.face_block
+    return path.read_bytes()[offset:offset + length]
+
+
+def test_one_tile_is_the_in_core_call(client, scan, tmp_path):
+    path, V, F, _, eps = scan
+    report = fair_tiled(path, tmp_path / "out.ply", eps, client=client, tile_memory="1GiB")
+    W, _ = cf.fair(V, F, eps)
+    out, out_faces = cf.read_mesh(tmp_path / "out.ply")
+    assert len(report.colour) == 1
+    assert np.array_equal(out, W)
+    assert np.array_equal(out_faces, F)
+
+
+def test_tiles_keep_bound_faces_properties_and_converge(client, scan, tmp_path):
+    path, V, F, properties, eps = scan
+    before = digest(path)
+    out_path = tmp_path / "out.ply"
+    report = fair_tiled(path, out_path, eps, client=client, tile_memory=len(F) * 400 // 8)
+    assert digest(path) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
+    assert len(report.colour) >= 8 and report.colour.max() >= 1
+    assert report.tile.shape == (len(V),) and set(np.unique(report.tile)) == set(
+        range(len(report.colour)))
+    assert report.converged and report.motion[-1] <= 0.01
+    W, out_faces, carried = cf.read_mesh(out_path, properties=True)
+    assert (np.linalg.norm(W - V, axis=1) <= eps).all()
+    assert face_block(out_path) == face_block(path)
+    assert np.array_equal(out_faces, F)
+    for name, values in properties.vertex.items():
+        assert np.array_equal(carried.vertex[name], values)
+    assert np.array_equal(carried.face["quality"], properties.face["quality"])
+    assert np.array_equal(carried.vertex["deviation"], np.linalg.norm(W - V, axis=1))
+    assert report.max_deviation == pytest.approx(carried.vertex["deviation"].max(), rel=0, abs=0)
+    _, input_energy = cf.fair(V, F, eps, max_iterations=0)
+    _, whole = cf.fair(V, F, eps)
+    tiled = cf.fair(W, F, eps, max_iterations=0)[1]
+    assert tiled.initial_energy < input_energy.initial_energy
+    assert tiled.initial_energy <= 1.05 * whole.final_energy
+
+
+def test_other_formats_are_converted(client, scan, tmp_path):
+    path, V, F, _, eps = scan
+    off = tmp_path / "scan.off"
+    cf.write_mesh(off, V, F)
+    fair_tiled(off, tmp_path / "out.ply", eps, client=client, tile_memory=len(F) * 400 // 4)
+    W, out_faces = cf.read_mesh(tmp_path / "out.ply")
+    assert np.array_equal(out_faces, F)
+    assert (np.linalg.norm(W - V, axis=1) <= eps).all()
+
+
+def test_refusals_leave_files_as_they_were(client, scan, tmp_path):
+    path, V, F, _, eps = scan
+    before = digest(path)
+    with pytest.raises(ValueError, match="is the input"):
+        fair_tiled(path, path, eps, client=client)
+    with pytest.raises(ValueError, match="writes PLY"):
+        fair_tiled(path, tmp_path / "out.off", eps, client=client)
+    with pytest.raises(ValueError, match="does not take 'feature_angle'"):
+        fair_tiled(path, tmp_path / "out.ply", eps, client=client, feature_angle=30)
+    with pytest.raises(ValueError, match="eps must be positive"):
+        fair_tiled(path, tmp_path / "out.ply", -1.0, client=client)
+    with pytest.raises(cf.InputError, match="sliver_barrier_weight"):
+        fair_tiled(path, tmp_path / "out.ply", eps, client=client, sliver_barrier_weight=-1)
+    assert digest(path) == before
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_defect_in_a_tile_is_an_input_error(client, tmp_path):
+    V, F = icosphere(3)
+    # Two faces through one edge the wrong way round: inconsistent orientation.
+    F = F.copy()
+    F[0] = F[0][::-1]
+    bad = tmp_path / "bad.ply"
+    cf.write_mesh(bad, V, F)
+    with pytest.raises(cf.InputError) as error:
+        fair_tiled(bad, tmp_path / "out.ply", 0.01, client=client, tile_memory=len(F) * 400 // 4)
+    assert error.value.defect == cf.Defect.INCONSISTENT_ORIENTATION
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.ply"]
+
+
+def test_command_line(scan, tmp_path, capsys):
+    from cgal_constrained_fairing.tiles._command_line import main
+    path, V, F, _, eps = scan
+    out = tmp_path / "out.ply"
+    tile_memory = str(len(F) * 400 // 4)
+    assert main([str(path), str(out), "--eps", "0.25h", "--tile-memory", tile_memory]) == 0
+    assert "converged=True" in capsys.readouterr().out
+    W, out_faces = cf.read_mesh(out)
+    assert np.array_equal(out_faces, F)
+    assert (np.linalg.norm(W - V, axis=1) <= eps).all()
+    assert main([str(path), str(tmp_path / "out.off")]) == 1
+    assert "writes PLY" in capsys.readouterr().out
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
