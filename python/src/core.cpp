@@ -465,10 +465,11 @@ py::dict fair(const Float_array& vertices, const Index_array& faces, const Optio
 }
 
 // One tile of fair_tiled(): the owned vertices faired from `current`, the ghosts frozen there
-// (Tile_fairing.h), with the settings fair() takes; `max_iterations` caps this sweep's descent,
-// `from_start` starts the owned vertices at the smoothed start.
+// (Tile_fairing.h), but those `at_start`, taken at the smoothed start, with the settings fair()
+// takes; `max_iterations` caps this sweep's descent.
 py::dict fair_tile(const Float_array& vertices, const Float_array& current, const Index_array& faces,
-                   const Mask_array& owned, const Options& options, std::size_t max_iterations, bool from_start)
+                   const Mask_array& owned, const Mask_array& at_start, const Options& options,
+                   std::size_t max_iterations)
 {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
   const Fairing_outputs outputs(n);
@@ -481,11 +482,13 @@ py::dict fair_tile(const Float_array& vertices, const Float_array& current, cons
       result = rejected(error);
     else
     {
-      CF::Tile_state tile{CF::Points(Eigen::Index(n), 3), std::vector<bool>(n), max_iterations, from_start};
+      CF::Tile_state tile{CF::Points(Eigen::Index(n), 3), std::vector<bool>(n), std::vector<bool>(n),
+                          max_iterations};
       for(std::size_t i = 0; i < n; ++i)
       {
         CF::point(tile.current, i) = Eigen::Vector3d(current.data() + 3 * i);
         tile.owned[i] = owned.data()[i];
+        tile.at_start[i] = at_start.data()[i];
       }
       const auto np = CFP::vertex_deviation_map(
         Array_map<double, vertex_descriptor>{outputs.deviation_data},
@@ -1048,7 +1051,7 @@ void bind_fairing(py::module_& m)
         py::arg("fixed"), py::arg("box_half_extents"), py::arg("box_centers"), py::arg("region"), py::arg("feature_edges"),
         py::arg("progress"));
   m.def("fair_tile", &fair_tile, py::arg("vertices"), py::arg("current"), py::arg("faces"), py::arg("owned"),
-        py::arg("options"), py::arg("max_iterations"), py::arg("from_start"));
+        py::arg("at_start"), py::arg("options"), py::arg("max_iterations"));
   m.def(
     "mean_edge_length",
     [](const Float_array& vertices, const Index_array& faces) {

@@ -2,9 +2,9 @@
 
 `fair_tiled` cuts the mesh into spatial tiles of about `tile_memory` each, every tile with rings
 of its neighbours' vertices (ghosts) around the vertices it owns, and fairs the tiles as Dask
-tasks: first each tile's owned vertices to the smoothed start of the whole call, then sweeps in
-which the tiles of one colour (no two sharing a hinge) descend at once with their ghosts frozen,
-until no owned vertex moves more than 1 % of epsilon in a sweep. Every vertex's bound is its own,
+tasks, in sweeps in which the tiles of one colour (no two sharing a hinge) descend at once with
+their ghosts frozen, from the smoothed start of the whole call where no tile has yet been, until
+the owned vertices move by at most 1 % of epsilon in a sweep (RMS). Every vertex's bound is its own,
 so each tile's descent stays within the whole's bound and lowers the whole's objective (a
 Schwarz method); the result approaches the in-core call's. No process holds the whole mesh's
 fairing state: a task holds its tile's, the client the points and the tiles' plan.
@@ -66,9 +66,10 @@ class TiledReport:
     colour : numpy.ndarray
         ``(T,)``, each tile's colour: tiles of one colour share no hinge and run at once.
     sweeps : int
-        Sweeps of descents after the start.
+        Sweeps of descents over all tiles.
     motion : list of float
-        The root mean square of the owned vertices' motions in each sweep, in units of epsilon.
+        The root mean square of the owned vertices' motions in each sweep, in units of epsilon
+        (0 in the first, whose vertices all descend from the start).
     largest_motion : list of float
         The largest motion of an owned vertex in each sweep, in units of epsilon.
     iterations : list of int
@@ -225,6 +226,7 @@ class _Run:
         state[:] = points
         _sweeps.open_array_new(self.folder / "deviation.npy", (n,), np.float64)
         _sweeps.open_array_new(self.folder / "at_bound.npy", (n,), np.uint8)
+        _sweeps.open_array_new(self.folder / "faired.npy", (n,), np.uint8)
         faces = _sweeps.open_array_new(self.folder / "faces.npy", (self.mesh.face.count, 3),
                                        self.mesh.face.dtype["corners"].base.newbyteorder("="))
         faces[:] = self.mesh.faces()["corners"]
@@ -245,7 +247,6 @@ class _Run:
                               for t in range(tiles.count)])
         colour = _partition.colour_tiles([b["near"] for b in built])
         sizes = np.array([[b["vertices"], b["faces"]] for b in built])
-        self._sweep(0, range(tiles.count))
         motion, largest, iterations = [], [], []
         for sweep in range(1, MAX_SWEEPS + 1):
             done = []
@@ -257,7 +258,7 @@ class _Run:
             largest.append(max(d["largest_motion"] for d in done) / self.epsilon)
             iterations.append(sum(d["iterations"] for d in done))
             # Tiles of one colour share no hinge: their first descents are final.
-            if motion[-1] <= MOTION_TOLERANCE or colour.max() == 0:
+            if (sweep > 1 and motion[-1] <= MOTION_TOLERANCE) or colour.max() == 0:
                 break
         deviation = _sweeps.open_array(self.folder / "deviation.npy")
         return TiledReport(tiles.tile, colour, len(motion), motion, largest, iterations,

@@ -53,19 +53,21 @@ def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]
 
 def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[str, Any],
               max_iterations: int, threads: int) -> Dict[str, Any]:
-    """Tile `t`'s owned vertices faired from the current points (sweep 0: to the smoothed
-    start), written to the tile's file for `sweep`."""
+    """Tile `t`'s owned vertices faired from the current points, written to the tile's file
+    for `sweep`; the vertices no tile has faired yet start at the smoothed start."""
     set_max_threads(threads)
     root = Path(folder)
     tile = np.load(root / "tiles" / f"{t}.npz")
     vertices, owned = tile["vertices"], tile["owned"]
     X0 = np.ascontiguousarray(open_array(root / "input.npy")[vertices])
     current = np.ascontiguousarray(open_array(root / "state.npy")[vertices])
+    at_start = open_array(root / "faired.npy")[vertices] == 0
     options = call_options(epsilon, **keywords)
-    outcome = _core.fair_tile(X0, current, tile["faces"], owned, options,
-                              0 if sweep == 0 else max_iterations, sweep == 0)
+    outcome = _core.fair_tile(X0, current, tile["faces"], owned, at_start, options,
+                              max_iterations)
     W, report = result_of(outcome)
     moved = np.linalg.norm(W[owned] - current[owned], axis=1)
+    moved[at_start[owned]] = 0  # the start is no motion of the sweeps
     _save(root / "tiles" / f"{t}.sweep{sweep}.npz", points=W[owned],
           deviation=report.deviation[owned], at_bound=report.at_bound[owned])
     return {"tile": t, "squared_motion": float(np.square(moved).sum()),
@@ -74,14 +76,16 @@ def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[st
 
 
 def apply_tile(folder: Path, t: int, sweep: int) -> None:
-    """Tile `t`'s points of `sweep` into the run's current points, deviations and flags."""
+    """Tile `t`'s points of `sweep` into the run's current points, deviations and flags; its
+    owned vertices are faired from now on."""
     tile = np.load(folder / "tiles" / f"{t}.npz")
     result_path = folder / "tiles" / f"{t}.sweep{sweep}.npz"
     result = np.load(result_path)
     rows = tile["vertices"][tile["owned"]]
-    for name, key in (("state", "points"), ("deviation", "deviation"), ("at_bound", "at_bound")):
+    for name, key in (("state", "points"), ("deviation", "deviation"), ("at_bound", "at_bound"),
+                      ("faired", None)):
         target = open_array(folder / f"{name}.npy", "r+")
-        target[rows] = result[key]
+        target[rows] = result[key] if key else 1
         target.flush()
         del target
     result_path.unlink()

@@ -35,16 +35,17 @@ namespace Constrained_fairing {
 // Where a tile's vertices are now, in the order of vertices(tmesh), and which of them it owns.
 struct Tile_state
 {
-  Points current;             // a row per vertex, within its bound about the input point
-  std::vector<bool> owned;    // the vertices that descend; the others are ghosts
-  std::size_t max_iterations; // of this sweep's descent
-  bool from_start;            // the owned vertices descend from the smoothed start instead
+  Points current;              // a row per vertex, within its bound about the input point
+  std::vector<bool> owned;     // the vertices that descend; the others are ghosts
+  std::vector<bool> at_start;  // the vertices not faired yet, taken at the smoothed start
+  std::size_t max_iterations;  // of this sweep's descent
 };
 
-// The owned vertices of `tmesh` (whose points are the input's) faired from `tile.current` (or
-// the smoothed start), the ghosts frozen at `tile.current`; the mesh's points then hold the
-// tile's new state. With no iteration, the owned vertices get the smoothed start: the first pass
-// over the tiles puts the whole mesh where the whole call starts. The named parameters
+// The owned vertices of `tmesh` (whose points are the input's) faired from `tile.current`, the
+// ghosts frozen there, but those `at_start`, which the first sweep takes at the smoothed start
+// (where the whole call starts: with two rings more than the smoothing steps, the start is the
+// whole call's out to the second ring, which the owned vertices' hinges reach); the mesh's
+// points then hold the tile's new state. The named parameters
 // are those of constrained_fairing() that a whole mesh takes (no face range, no creases: a
 // part's objective has no crease term).
 template <typename TriangleMesh, typename NamedParameters>
@@ -52,7 +53,7 @@ Constrained_fairing_result fair_tile(TriangleMesh& tmesh, double epsilon, const 
                                      const NamedParameters& np)
 {
   CGAL_precondition(std::size_t(tile.current.rows()) == num_vertices(tmesh));
-  CGAL_precondition(tile.owned.size() == num_vertices(tmesh));
+  CGAL_precondition(tile.owned.size() == num_vertices(tmesh) && tile.at_start.size() == num_vertices(tmesh));
   using Faces = std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>;
   const auto vpm = get_property_map(CGAL::vertex_point, tmesh);
   Mesh_input<TriangleMesh, std::remove_const_t<decltype(vpm)>, Faces> input(tmesh, vpm, nullptr);
@@ -66,7 +67,7 @@ Constrained_fairing_result fair_tile(TriangleMesh& tmesh, double epsilon, const 
     {
       if(tile.owned[k])
         part.push_back(rank[k]);
-      if(!tile.owned[k] || !tile.from_start)
+      if(!tile.at_start[k])
         point(X, rank[k]) = point(tile.current, k);
     }
     std::sort(part.begin(), part.end());
