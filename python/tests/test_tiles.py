@@ -13,10 +13,14 @@ import numpy as np
 import pytest
 
 import cgal_constrained_fairing as cf
-from cgal_constrained_fairing.tiles import fair_tiled
+from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, fair_tiled
 from cgal_constrained_fairing.tiles import _ply_map
 
 from conftest import icosphere, noisy
+
+# The small meshes here are cut into tiles smaller than their 18 rings of ghosts, which
+# fair_tiled warns of (test_tiles_too_small_for_their_ghosts_warn).
+pytestmark = pytest.mark.filterwarnings("ignore:tiles of .* rings of ghosts")
 
 
 @pytest.fixture(scope="module")
@@ -45,6 +49,11 @@ def scan(tmp_path_factory):
     return path, V, F, properties, eps
 
 
+def budget(F, parts):
+    """A tile memory that cuts the mesh of faces `F` into about `parts` tiles."""
+    return len(F) * BYTES_PER_TRIANGLE // parts
+
+
 def digest(path):
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
@@ -69,7 +78,7 @@ def test_tiles_keep_bound_faces_properties_and_converge(client, scan, tmp_path):
     path, V, F, properties, eps = scan
     before = digest(path)
     out_path = tmp_path / "out.ply"
-    report = fair_tiled(path, out_path, eps, client=client, tile_memory=len(F) * 400 // 8)
+    report = fair_tiled(path, out_path, eps, client=client, tile_memory=budget(F, 8))
     assert digest(path) == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
     assert len(report.colour) >= 8 and report.colour.max() >= 1
@@ -96,7 +105,7 @@ def test_other_formats_are_converted(client, scan, tmp_path):
     path, V, F, _, eps = scan
     off = tmp_path / "scan.off"
     cf.write_mesh(off, V, F)
-    fair_tiled(off, tmp_path / "out.ply", eps, client=client, tile_memory=len(F) * 400 // 4)
+    fair_tiled(off, tmp_path / "out.ply", eps, client=client, tile_memory=budget(F, 4))
     W, out_faces = cf.read_mesh(tmp_path / "out.ply")
     assert np.array_equal(out_faces, F)
     assert (np.linalg.norm(W - V, axis=1) <= eps).all()
@@ -127,7 +136,7 @@ def test_a_defect_in_a_tile_is_an_input_error(client, tmp_path):
     bad = tmp_path / "bad.ply"
     cf.write_mesh(bad, V, F)
     with pytest.raises(cf.InputError) as error:
-        fair_tiled(bad, tmp_path / "out.ply", 0.01, client=client, tile_memory=len(F) * 400 // 4)
+        fair_tiled(bad, tmp_path / "out.ply", 0.01, client=client, tile_memory=budget(F, 4))
     assert error.value.defect == cf.Defect.INCONSISTENT_ORIENTATION
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.ply"]
 
@@ -136,7 +145,7 @@ def test_command_line(scan, tmp_path, capsys):
     from cgal_constrained_fairing.tiles._command_line import main
     path, V, F, _, eps = scan
     out = tmp_path / "out.ply"
-    tile_memory = str(len(F) * 400 // 4)
+    tile_memory = str(budget(F, 4))
     assert main([str(path), str(out), "--eps", "0.25h", "--tile-memory", tile_memory]) == 0
     assert "converged=True" in capsys.readouterr().out
     W, out_faces = cf.read_mesh(out)
@@ -145,3 +154,11 @@ def test_command_line(scan, tmp_path, capsys):
     assert main([str(path), str(tmp_path / "out.off")]) == 1
     assert "writes PLY" in capsys.readouterr().out
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
+
+
+@pytest.mark.filterwarnings("default")
+def test_tiles_too_small_for_their_ghosts_warn(client, scan, tmp_path):
+    path, V, F, _, eps = scan
+    with pytest.warns(UserWarning, match="more than tile_memory"):
+        fair_tiled(path, tmp_path / "out.ply", eps, client=client, tile_memory=budget(F, 8))
+    assert (tmp_path / "out.ply").exists()

@@ -27,6 +27,8 @@ import dataclasses
 import math
 import os
 import shutil
+import time
+import warnings
 from pathlib import Path
 from typing import Any, Dict, List, Optional
 
@@ -41,9 +43,10 @@ from ._command_line import main
 
 __all__ = ["TiledReport", "fair_tiled", "main"]
 
-# What a tile's task holds per triangle of its mesh: about 340 bytes in the library's call
-# (hinges, objective, solver history), and the task's own copies of points and faces.
-BYTES_PER_TRIANGLE = 400
+# What a tile's task holds per triangle of its mesh, above an idle worker: measured 553 bytes at
+# 197,000 triangles (the library's call holds about 340 for the tile's problem; the part that
+# descends and the task's copies of points and faces add the rest), building it 500.
+BYTES_PER_TRIANGLE = 600
 # A sweep ends the run when the owned vertices moved by at most this fraction of epsilon in it,
 # as a root mean square: the largest motion does not fall so far, since ten more iterations of
 # the whole call from its own result move single vertices by 0.2 to 0.4 epsilon.
@@ -80,6 +83,12 @@ class TiledReport:
         The largest distance of an output vertex to its input position.
     tile_sizes : numpy.ndarray
         ``(T, 2)``: each tile's vertices with its ghosts, and its triangles.
+    peak_memory : int
+        The largest resident memory of a worker process at the end of one of its tasks, in
+        bytes: what a worker's memory limit must hold.
+    seconds : dict of str to float
+        The wall time of each phase: ``"read"`` (the input's arrays), ``"tiles"`` (cutting
+        and building them), ``"sweep 1"``, ... and ``"write"``.
     """
 
     tile: np.ndarray
@@ -91,6 +100,8 @@ class TiledReport:
     converged: bool
     max_deviation: float
     tile_sizes: np.ndarray
+    peak_memory: int
+    seconds: Dict[str, float] = dataclasses.field(default_factory=dict)
 
     def __repr__(self):
         return (f"TiledReport({len(self.colour)} tiles in {self.colour.max() + 1} colours, "
@@ -119,7 +130,7 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
         process per core, for the run only.
     tile_memory : str or int
         What a tile's task may hold (``"2GiB"``, ``"500MB"`` or bytes): the tiles are made
-        small enough, at about 400 bytes per triangle.
+        small enough, at about 600 bytes per triangle.
     work_dir : path-like, optional
         Where the run keeps its arrays; a new folder in it is removed at the end. Default: the
         output's folder.
@@ -151,10 +162,14 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
     folder.mkdir()
     try:
         with _cluster(client) as (running, threads):
+            clock = time.perf_counter()
             run = _Run(folder, in_path, eps, fair_keywords, running, threads)
+            run.seconds["read"] = time.perf_counter() - clock
             report = run.fair(budget)
+            clock = time.perf_counter()
             run.write(out_path)
-        return report
+            run.seconds["write"] = time.perf_counter() - clock
+        return dataclasses.replace(report, seconds=run.seconds)
     finally:
         shutil.rmtree(folder)
 
@@ -206,6 +221,7 @@ class _Run:
 
     def __init__(self, folder: Path, in_path: Path, eps, keywords, client, threads):
         self.folder, self.keywords = folder, keywords
+        self.seconds: Dict[str, float] = {}
         self.client, self.threads = client, threads
         if not _ply_map.is_binary_ply(in_path):
             converted = folder / "input.ply"
@@ -235,36 +251,67 @@ class _Run:
         self.points, self.faces = points, faces
 
     def fair(self, budget: int) -> TiledReport:
-        count = max(1, math.ceil(len(self.faces) * BYTES_PER_TRIANGLE / budget))
-        tiles = _partition.kd_tiles(self.points, count)
-        np.save(self.folder / "tile.npy", tiles.tile)
-        np.save(self.folder / "boxes.npy", tiles.boxes)
-        (self.folder / "tiles").mkdir()
-        rings = _sweeps.ghost_rings(self._smoothing_steps())
-        margin = 2 * (rings + 1) * self._edge_scale()
-        built = self._gather([self.client.submit(_sweeps.build_tile, str(self.folder), t, rings,
-                                                 margin, pure=False)
-                              for t in range(tiles.count)])
+        clock = time.perf_counter()
+        tiles, built = self._tiles(budget)
+        self.seconds["tiles"] = time.perf_counter() - clock
         colour = _partition.colour_tiles([b["near"] for b in built])
         sizes = np.array([[b["vertices"], b["faces"]] for b in built])
         motion, largest, iterations = [], [], []
+        peak = max(b["peak_memory"] for b in built)
         for sweep in range(1, MAX_SWEEPS + 1):
-            done = []
+            done, clock = [], time.perf_counter()
             for c in range(colour.max() + 1):
                 done += self._sweep(sweep, np.flatnonzero(colour == c))
+            self.seconds[f"sweep {sweep}"] = time.perf_counter() - clock
             squares = sum(d["squared_motion"] for d in done)
             owned = sum(d["owned"] for d in done)
             motion.append(math.sqrt(squares / max(owned, 1)) / self.epsilon)
             largest.append(max(d["largest_motion"] for d in done) / self.epsilon)
             iterations.append(sum(d["iterations"] for d in done))
+            peak = max([peak] + [d["peak_memory"] for d in done])
             # Tiles of one colour share no hinge: their first descents are final.
             if (sweep > 1 and motion[-1] <= MOTION_TOLERANCE) or colour.max() == 0:
                 break
         deviation = _sweeps.open_array(self.folder / "deviation.npy")
         return TiledReport(tiles.tile, colour, len(motion), motion, largest, iterations,
                            motion[-1] <= MOTION_TOLERANCE or colour.max() == 0,
-                           float(deviation.max(initial=0.0)),
-                           sizes)
+                           float(deviation.max(initial=0.0)), sizes, peak)
+
+    def _tiles(self, budget: int):
+        """Tiles whose meshes, ghosts included, fit `budget` at BYTES_PER_TRIANGLE: a first cut
+        by the owned triangles alone, then, while the ghosts push a tile over (twice at most),
+        a cut sized by the ghosts the last one showed (a patch of f triangles has ghosts in
+        proportion to its border, about sqrt(f))."""
+        rings = _sweeps.ghost_rings(self._smoothing_steps())
+        # Rings reach about an edge length each; where they reach farther, build_tile doubles it.
+        margin = (rings + 1) * self._edge_scale()
+        most = budget / BYTES_PER_TRIANGLE
+        count = max(1, math.ceil(len(self.faces) / most))
+        for attempt in range(3):
+            tiles, built = self._build_tiles(count, rings, margin)
+            largest = max(built, key=lambda b: b["faces"])
+            if largest["faces"] <= most or attempt == 2:
+                break
+            own = len(self.faces) / count
+            ghosts = (largest["faces"] - own) / math.sqrt(own)
+            if ghosts ** 2 >= most:
+                break
+            fitting = ((math.sqrt(ghosts ** 2 + 4 * most) - ghosts) / 2) ** 2
+            count = max(count + 1, math.ceil(len(self.faces) / fitting))
+        if largest["faces"] > most:
+            warnings.warn(f"tiles of {largest['faces']} triangles with their {rings} rings of "
+                          f"ghosts need about {largest['faces'] * BYTES_PER_TRIANGLE} bytes, "
+                          f"more than tile_memory ({budget})")
+        return tiles, built
+
+    def _build_tiles(self, count: int, rings: int, margin: float):
+        tiles = _partition.kd_tiles(self.points, count)
+        np.save(self.folder / "tile.npy", tiles.tile)
+        np.save(self.folder / "boxes.npy", tiles.boxes)
+        (self.folder / "tiles").mkdir(exist_ok=True)
+        return tiles, self._gather([self.client.submit(_sweeps.build_tile, str(self.folder), t,
+                                                       rings, margin, pure=False)
+                                    for t in range(tiles.count)])
 
     def _sweep(self, sweep: int, tiles) -> List[Dict[str, Any]]:
         done = self._gather([self.client.submit(_sweeps.fair_tile, str(self.folder), int(t), sweep,

@@ -20,8 +20,9 @@ _TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2
           "uint": "u4", "uint32": "u4", "float": "f4", "float32": "f4", "double": "f8",
           "float64": "f8"}
 
-# The rows copied at a time when writing, so that no step holds more than a block.
-BLOCK_ROWS = 1 << 20
+# The rows read or written at a time, so that no step holds more than a block (a block of faces
+# with its corners' points is about 100 bytes a row).
+BLOCK_ROWS = 1 << 18
 
 
 @dataclasses.dataclass

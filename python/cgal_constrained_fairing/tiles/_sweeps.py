@@ -8,6 +8,7 @@ writes the same file, so the result does not depend on the scheduling.
 """
 
 import os
+import resource
 from pathlib import Path
 from typing import Any, Dict
 
@@ -48,7 +49,8 @@ def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]
     _save(root / "tiles" / f"{t}.npz", vertices=mesh.vertices, faces=mesh.local_faces,
           owned=mesh.owned)
     return {"tile": t, "near": mesh.near_owners, "vertices": len(mesh.vertices),
-            "faces": len(mesh.local_faces), "owned": int(mesh.owned.sum())}
+            "faces": len(mesh.local_faces), "owned": int(mesh.owned.sum()),
+            "peak_memory": peak_memory()}
 
 
 def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[str, Any],
@@ -72,7 +74,13 @@ def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[st
           deviation=report.deviation[owned], at_bound=report.at_bound[owned])
     return {"tile": t, "squared_motion": float(np.square(moved).sum()),
             "owned": int(owned.sum()), "largest_motion": float(moved.max(initial=0.0)),
-            "iterations": report.number_of_iterations, "status": report.status.value}
+            "iterations": report.number_of_iterations, "status": report.status.value,
+            "peak_memory": peak_memory()}
+
+
+def peak_memory() -> int:
+    """The largest resident memory of this process so far, in bytes (Linux counts kilobytes)."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
 
 
 def apply_tile(folder: Path, t: int, sweep: int) -> None:
