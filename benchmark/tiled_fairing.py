@@ -22,7 +22,6 @@ printed with the figures.
 import argparse
 import os
 import platform
-import resource
 import statistics
 import subprocess
 import sys
@@ -34,6 +33,7 @@ import numpy as np
 
 import cgal_constrained_fairing as cf
 from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, fair_tiled
+from cgal_constrained_fairing.tiles._sweeps import peak_memory
 
 IN_CORE_BYTES_PER_TRIANGLE = 340
 
@@ -126,7 +126,7 @@ def tiled(noisy, out, eps, runs, workers, limit, tile_memory):
             start = time.perf_counter()
             report = fair_tiled(noisy, out, eps, client=client, tile_memory=tile_memory)
             times.append(time.perf_counter() - start)
-            peaks = client.run(lambda: resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024)
+            peaks = client.run(peak_memory)
     return report, statistics.median(times), peaks
 
 
@@ -150,6 +150,7 @@ def measure(args, level, folder):
     print(f"  tiles: {len(report.colour)}, vertices with ghosts {report.tile_sizes[:, 0].min()} "
           f"to {report.tile_sizes[:, 0].max()}; sweep motions (RMS, eps) "
           f"{[round(m, 4) for m in report.motion]}, largest {[round(m, 3) for m in report.largest_motion]}")
+    print("  phases (s): " + ", ".join(f"{k} {v:.2f}" for k, v in report.seconds.items()))
     d = np.linalg.norm(T - W, axis=1) / eps
     print(f"  tiled against in-core: RMS {np.sqrt(np.mean(d ** 2)):.4f} eps, largest {d.max():.4f} "
           f"eps, 99th percentile {np.percentile(d, 99):.4f} eps")
@@ -166,7 +167,8 @@ def measure(args, level, folder):
               f"{angle_in[near].mean():.4f} / {angle_in[~near].mean():.4f})")
     bound = bool((np.linalg.norm(T - V, axis=1) <= eps).all())
     print(f"  bound holds: {bound}; faces identical: {bool(np.array_equal(F_out, F))}; worker peaks "
-          f"{sorted(round(p / 2 ** 20) for p in peaks.values())} MiB against a limit of "
+          f"{sorted(round(p / 2 ** 20) for p in peaks.values())} MiB (tasks' largest "
+          f"{report.peak_memory / 2 ** 20:.0f}) against a limit of "
           f"{limit / 2 ** 20:.0f} MiB (an idle worker {base / 2 ** 20:.0f} MiB, the in-core call "
           f"about {IN_CORE_BYTES_PER_TRIANGLE * len(F) / 2 ** 20:.0f} MiB more)")
 

@@ -47,9 +47,10 @@ __all__ = ["TiledReport", "fair_tiled", "main"]
 # 197,000 triangles (the library's call holds about 340 for the tile's problem; the part that
 # descends and the task's copies of points and faces add the rest), building it 500.
 BYTES_PER_TRIANGLE = 600
-# A sweep ends the run when the owned vertices moved by at most this fraction of epsilon in it,
-# as a root mean square: the largest motion does not fall so far, since ten more iterations of
-# the whole call from its own result move single vertices by 0.2 to 0.4 epsilon.
+# A sweep ends the run when the owned vertices next to the ghosts (the seams) moved by at most
+# this fraction of epsilon in it, as a root mean square: the largest motion does not fall so far,
+# since ten more iterations of the whole call from its own result move single vertices by 0.2
+# to 0.4 epsilon.
 MOTION_TOLERANCE = 0.01
 MAX_SWEEPS = 20
 # The iterations of a tile's descent in the sweeps after the first, which mend the seams: the
@@ -71,8 +72,9 @@ class TiledReport:
     sweeps : int
         Sweeps of descents over all tiles.
     motion : list of float
-        The root mean square of the owned vertices' motions in each sweep, in units of epsilon
-        (0 in the first, whose vertices all descend from the start).
+        The root mean square of the motions in each sweep of the owned vertices within 8 rings
+        of a ghost, where the seams are mended, in units of epsilon (0 in the first, whose
+        vertices all descend from the start).
     largest_motion : list of float
         The largest motion of an owned vertex in each sweep, in units of epsilon.
     iterations : list of int
@@ -264,8 +266,8 @@ class _Run:
                 done += self._sweep(sweep, np.flatnonzero(colour == c))
             self.seconds[f"sweep {sweep}"] = time.perf_counter() - clock
             squares = sum(d["squared_motion"] for d in done)
-            owned = sum(d["owned"] for d in done)
-            motion.append(math.sqrt(squares / max(owned, 1)) / self.epsilon)
+            seam = sum(d["seam"] for d in done)
+            motion.append(math.sqrt(squares / max(seam, 1)) / self.epsilon)
             largest.append(max(d["largest_motion"] for d in done) / self.epsilon)
             iterations.append(sum(d["iterations"] for d in done))
             peak = max([peak] + [d["peak_memory"] for d in done])
@@ -283,8 +285,9 @@ class _Run:
         a cut sized by the ghosts the last one showed (a patch of f triangles has ghosts in
         proportion to its border, about sqrt(f))."""
         rings = _sweeps.ghost_rings(self._smoothing_steps())
-        # Rings reach about an edge length each; where they reach farther, build_tile doubles it.
-        margin = (rings + 1) * self._edge_scale()
+        # Rings reach about an edge length each, farther across long edges: half as much again,
+        # and build_tile doubles it where they reach farther still.
+        margin = 1.5 * (rings + 1) * self._edge_scale()
         most = budget / BYTES_PER_TRIANGLE
         count = max(1, math.ceil(len(self.faces) / most))
         for attempt in range(3):
@@ -309,6 +312,9 @@ class _Run:
         np.save(self.folder / "tile.npy", tiles.tile)
         np.save(self.folder / "boxes.npy", tiles.boxes)
         (self.folder / "tiles").mkdir(exist_ok=True)
+        boxes = np.array([_partition.grown(box, margin) for box in tiles.boxes])
+        for t, faces in enumerate(_partition.candidate_faces(self.faces, self.points, boxes)):
+            np.save(self.folder / "tiles" / f"{t}.candidates.npy", faces)
         return tiles, self._gather([self.client.submit(_sweeps.build_tile, str(self.folder), t,
                                                        rings, margin, pure=False)
                                     for t in range(tiles.count)])

@@ -2,8 +2,8 @@
 
 A tile owns the vertices of one cell of a k-d split of the input points (cells of about equal
 counts). Its mesh is the triangles within ``rings`` rings of its owned vertices, found among the
-triangles with a corner in the cell's box grown by a margin, so that a task reads only its
-region of the face array. Two tiles get different colours when one's ghosts within
+triangles with a corner in the cell's box grown by a margin, which one pass over the face array
+finds for all tiles at once. Two tiles get different colours when one's ghosts within
 `HINGE_RINGS` rings are owned by the other: the descents of tiles of one colour then touch no
 common hinge, and run at once.
 """
@@ -17,6 +17,10 @@ from ._ply_map import BLOCK_ROWS
 
 # The rings around a moving vertex that its hinges reach (their triangles' corners).
 HINGE_RINGS = 2
+# The rings of owned vertices next to the ghosts whose motion tells whether the seams are
+# mended: the sweeps after the first move little else, and a measure over all owned vertices
+# would fall below its tolerance while the seams still moved.
+SEAM_RINGS = 8
 
 
 @dataclasses.dataclass
@@ -54,15 +58,22 @@ def kd_tiles(points: np.ndarray, count: int) -> Tiles:
     return Tiles(tile, boxes)
 
 
-def candidate_faces(corners: np.ndarray, points: np.ndarray, box: np.ndarray) -> np.ndarray:
-    """The faces with a corner in `box` ((2, 3)), read a block of the face array at a time."""
-    found = []
+def candidate_faces(corners: np.ndarray, points: np.ndarray,
+                    boxes: np.ndarray) -> List[np.ndarray]:
+    """For each box ((T, 2, 3)), the faces with a corner in it, in one pass over the face array
+    a block at a time (a corner's point read once for all the boxes)."""
+    found: List[List[np.ndarray]] = [[] for _ in boxes]
     for begin in range(0, len(corners), BLOCK_ROWS):
         block = np.asarray(corners[begin:begin + BLOCK_ROWS], np.int64)
         p = points[block.ravel()].reshape(-1, 3, 3)
-        inside = ((p >= box[0]) & (p <= box[1])).all(axis=2).any(axis=1)
-        found.append(begin + np.flatnonzero(inside))
-    return np.concatenate(found) if found else np.zeros(0, np.int64)
+        for t, box in enumerate(boxes):
+            inside = ((p >= box[0]) & (p <= box[1])).all(axis=2).any(axis=1)
+            found[t].append(begin + np.flatnonzero(inside))
+    return [np.concatenate(f) if f else np.zeros(0, np.int64) for f in found]
+
+
+def grown(box: np.ndarray, margin: float) -> np.ndarray:
+    return box + np.array([[-margin], [margin]])
 
 
 @dataclasses.dataclass
@@ -74,6 +85,7 @@ class Tile_mesh:
     faces: np.ndarray      # (f,) int64 global face ids, in the input's order
     local_faces: np.ndarray  # (f, 3) int32 into vertices
     owned: np.ndarray      # (k,) bool
+    seam: np.ndarray       # (k,) bool, the owned vertices within SEAM_RINGS rings of a ghost
     near_owners: np.ndarray  # tiles owning vertices within HINGE_RINGS rings
 
 
@@ -81,11 +93,9 @@ class MarginTooSmall(Exception):
     """The rings left the region searched for triangles."""
 
 
-def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, margin: float) -> Tile_mesh:
-    """Tile `t`'s triangles within `rings` rings of its owned vertices; MarginTooSmall if the
-    rings reach beyond the box grown by `margin`."""
-    box = tiles.boxes[t] + np.array([[-margin], [margin]])
-    faces = candidate_faces(corners, points, box)
+def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, box, faces) -> Tile_mesh:
+    """Tile `t`'s triangles within `rings` rings of its owned vertices, found among `faces`,
+    those with a corner in `box`; MarginTooSmall if the rings reach beyond it."""
     local = np.asarray(corners[faces] if len(faces) else np.zeros((0, 3)), np.int64)
     vertices, local = np.unique(local, return_inverse=True)
     local = local.reshape(-1, 3)
@@ -106,8 +116,18 @@ def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, margin: float) 
     used[local[kept].ravel()] = True
     renumber = np.cumsum(used) - 1
     near_owners = np.unique(tiles.tile[vertices[near & used]])
-    return Tile_mesh(vertices[used], faces[kept], renumber[local[kept]].astype(np.int32),
-                     owned[used], near_owners[near_owners != t])
+    local_faces = renumber[local[kept]].astype(np.int32)
+    return Tile_mesh(vertices[used], faces[kept], local_faces, owned[used],
+                     _within_rings(~owned[used], local_faces, SEAM_RINGS) & owned[used],
+                     near_owners[near_owners != t])
+
+
+def _within_rings(start: np.ndarray, faces: np.ndarray, rings: int) -> np.ndarray:
+    reached = start.copy()
+    for _ in range(rings):
+        touching = reached[faces].any(axis=1)
+        reached[faces[touching].ravel()] = True
+    return reached
 
 
 def _closed_fans(local: np.ndarray, kept: np.ndarray, points: np.ndarray, box) -> np.ndarray:
@@ -126,9 +146,10 @@ def _closed_fans(local: np.ndarray, kept: np.ndarray, points: np.ndarray, box) -
 
 def _split_fan_vertices(faces: np.ndarray, n: int) -> np.ndarray:
     edges = np.sort(np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]]), axis=1)
-    unique, counts = np.unique(edges, axis=0, return_counts=True)
-    border = unique[counts == 1]
-    on_border = np.bincount(border.ravel(), minlength=n)
+    # Each edge as one integer: a 1-D unique is many times faster than one over rows.
+    keys, counts = np.unique(edges[:, 0].astype(np.int64) * n + edges[:, 1], return_counts=True)
+    border = keys[counts == 1]
+    on_border = np.bincount(np.concatenate([border // n, border % n]), minlength=n)
     return np.flatnonzero(on_border > 2)
 
 

@@ -8,7 +8,6 @@ writes the same file, so the result does not depend on the scheduling.
 """
 
 import os
-import resource
 from pathlib import Path
 from typing import Any, Dict
 
@@ -35,19 +34,25 @@ def open_array_new(path: Path, shape, dtype) -> np.ndarray:
 
 
 def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]:
-    """Tile `t`'s mesh into the run's folder; its ghosts' owners near enough to share a hinge."""
+    """Tile `t`'s mesh into the run's folder, from the faces found in its box grown by `margin`
+    (the tile's candidates file), searched again with a doubled margin where the rings reach
+    farther; its ghosts' owners near enough to share a hinge."""
     root = Path(folder)
     points = open_array(root / "input.npy")
     corners = open_array(root / "faces.npy")
     tiles = _partition.Tiles(open_array(root / "tile.npy"), np.load(root / "boxes.npy"))
+    faces = np.load(root / "tiles" / f"{t}.candidates.npy")
     while True:
+        box = _partition.grown(tiles.boxes[t], margin)
         try:
-            mesh = _partition.tile_mesh(t, tiles, corners, points, rings, margin)
+            mesh = _partition.tile_mesh(t, tiles, corners, points, rings, box, faces)
             break
         except _partition.MarginTooSmall:
             margin *= 2
+            faces = _partition.candidate_faces(corners, points,
+                                               _partition.grown(tiles.boxes[t], margin)[None])[0]
     _save(root / "tiles" / f"{t}.npz", vertices=mesh.vertices, faces=mesh.local_faces,
-          owned=mesh.owned)
+          owned=mesh.owned, seam=mesh.seam)
     return {"tile": t, "near": mesh.near_owners, "vertices": len(mesh.vertices),
             "faces": len(mesh.local_faces), "owned": int(mesh.owned.sum()),
             "peak_memory": peak_memory()}
@@ -68,19 +73,29 @@ def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[st
     outcome = _core.fair_tile(X0, current, tile["faces"], owned, at_start, options,
                               max_iterations)
     W, report = result_of(outcome)
-    moved = np.linalg.norm(W[owned] - current[owned], axis=1)
-    moved[at_start[owned]] = 0  # the start is no motion of the sweeps
+    moved = np.linalg.norm(W - current, axis=1)
+    moved[at_start] = 0  # the start is no motion of the sweeps
+    seam, moved = moved[tile["seam"]], moved[owned]
     _save(root / "tiles" / f"{t}.sweep{sweep}.npz", points=W[owned],
           deviation=report.deviation[owned], at_bound=report.at_bound[owned])
-    return {"tile": t, "squared_motion": float(np.square(moved).sum()),
-            "owned": int(owned.sum()), "largest_motion": float(moved.max(initial=0.0)),
+    return {"tile": t, "squared_motion": float(np.square(seam).sum()),
+            "seam": len(seam), "largest_motion": float(moved.max(initial=0.0)),
             "iterations": report.number_of_iterations, "status": report.status.value,
             "peak_memory": peak_memory()}
 
 
 def peak_memory() -> int:
-    """The largest resident memory of this process so far, in bytes (Linux counts kilobytes)."""
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    """The largest resident memory of this process so far, in bytes: the kernel's high-water
+    mark of its own memory (getrusage's would count the spawning parent's, which a process
+    started by fork and exec inherits); 0 where /proc does not tell."""
+    try:
+        with open("/proc/self/status") as status:
+            for line in status:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return 0
 
 
 def apply_tile(folder: Path, t: int, sweep: int) -> None:
