@@ -48,3 +48,15 @@ def sphere():
     """A noisy sphere of 5120 triangles, noise up to 0.2 h along the normal."""
     V, F = icosphere(4)
     return noisy(V, F, 0.2), F
+
+
+@pytest.fixture(scope="module")
+def client():
+    """A Dask LocalCluster of 2 single-threaded worker processes, for the module's tests."""
+    distributed = pytest.importorskip("distributed")
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()

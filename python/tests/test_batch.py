@@ -106,16 +106,6 @@ def test_local_cluster_started_and_closed(tmp_path):
 
 
 @pytest.fixture(scope="module")
-def client():
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                       dashboard_address=None)
-    client = distributed.Client(cluster)
-    yield client
-    client.close()
-    cluster.close()
-
-
-@pytest.fixture(scope="module")
 def first_run(client, tmp_path_factory):
     """A batch of three good meshes and two bad files: its inputs, output folder and rows."""
     folder = tmp_path_factory.mktemp("batch")

@@ -8,7 +8,6 @@ from the start; bad requests leave every file as it was and nothing of the run b
 
 import hashlib
 
-import distributed
 import numpy as np
 import pytest
 
@@ -21,16 +20,6 @@ from conftest import icosphere, noisy
 # The small meshes here are cut into tiles smaller than their 18 rings of ghosts, which
 # fair_tiled warns of (test_tiles_too_small_for_their_ghosts_warn).
 pytestmark = pytest.mark.filterwarnings("ignore:tiles of .* rings of ghosts")
-
-
-@pytest.fixture(scope="module")
-def client():
-    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                       dashboard_address=None)
-    client = distributed.Client(cluster)
-    yield client
-    client.close()
-    cluster.close()
 
 
 @pytest.fixture(scope="module")
