@@ -107,6 +107,10 @@ def test_refusals_leave_files_as_they_were(client, scan, tmp_path):
         fair_tiled(path, path, eps, client=client)
     with pytest.raises(ValueError, match="writes PLY"):
         fair_tiled(path, tmp_path / "out.off", eps, client=client)
+    (tmp_path / "folder.ply").mkdir()
+    with pytest.raises(ValueError, match="is a folder"):
+        fair_tiled(path, tmp_path / "folder.ply", eps, client=client)
+    (tmp_path / "folder.ply").rmdir()
     with pytest.raises(ValueError, match="does not take 'feature_angle'"):
         fair_tiled(path, tmp_path / "out.ply", eps, client=client, feature_angle=30)
     with pytest.raises(ValueError, match="eps must be positive"):

@@ -122,8 +122,9 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
     in_path : path-like
         A triangle mesh file (binary PLY read in place; OFF, OBJ, STL and ASCII PLY converted).
     out_path : path-like
-        The output, a ``.ply`` file; written beside its place and renamed when complete. It
-        must not be the input.
+        The output, a ``.ply`` file; written beside its place and renamed when complete, so
+        that an existing file of that name (never the input, nor a folder) is replaced only by
+        a complete output.
     epsilon : float or str
         The largest distance a vertex may move, as in `fair`, or as the command-line tool's
         ``--eps`` reads it (``"0.25h"``, a fraction of the mean edge length, or ``"auto"``).
@@ -179,6 +180,8 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
 def _check_paths(in_path: Path, out_path: Path) -> None:
     if not in_path.is_file():
         raise FileNotFoundError(f"{in_path}: no such file")
+    if out_path.is_dir():
+        raise ValueError(f"{out_path} is a folder; name the output file (.ply)")
     if out_path.suffix.lower() != ".ply":
         raise ValueError(f"{out_path}: a tiled fairing writes PLY; name the output .ply")
     if out_path.exists() and os.path.samefile(in_path, out_path):
