@@ -19,7 +19,6 @@
 #include <CGAL/Polygon_mesh_processing/label_map_epsilon.h>
 #include <CGAL/Polygon_mesh_processing/label_surface.h>
 #include <CGAL/Polygon_mesh_processing/label_surface_nets.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Driver/Tile_fairing.h>
 
 #include "front_end/Epsilon_grammar.h"
 #include "front_end/Label_map_file.h"
@@ -27,6 +26,7 @@
 #include "front_end/Mesh_file.h"
 #include "front_end/Output_files.h"
 #include "front_end/Point_set_file.h"
+#include "front_end/Tile_fairing.h"
 #include "front_end/Voxel_frame.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -482,7 +482,7 @@ py::dict fair_tile(const Float_array& vertices, const Float_array& current, cons
       result = rejected(error);
     else
     {
-      CF::Tile_state tile{CF::Points(Eigen::Index(n), 3), std::vector<bool>(n), std::vector<bool>(n),
+      FE::Tile_state tile{CF::Points(Eigen::Index(n), 3), std::vector<bool>(n), std::vector<bool>(n),
                           max_iterations};
       for(std::size_t i = 0; i < n; ++i)
       {
@@ -493,7 +493,7 @@ py::dict fair_tile(const Float_array& vertices, const Float_array& current, cons
       const auto np = CFP::vertex_deviation_map(
         Array_map<double, vertex_descriptor>{outputs.deviation_data},
         CFP::vertex_at_bound_map(Array_map<bool, vertex_descriptor>{outputs.at_bound_data}));
-      result = CF::fair_tile(mesh, options.epsilon, tile, CFP::fairing_settings(settings, np));
+      result = FE::fair_tile(mesh, options.epsilon, tile, CFP::fairing_settings(settings, np));
       copy_points(mesh, outputs.vertex_data);
     }
   }
