@@ -155,3 +155,17 @@ def test_tiles_too_small_for_their_ghosts_warn(client, scan, tmp_path):
     with pytest.warns(UserWarning, match="more than tile_memory"):
         fair_tiled(path, tmp_path / "out.ply", eps, client=client, tile_memory=budget(F, 8))
     assert (tmp_path / "out.ply").exists()
+
+
+def test_work_dir_keeps_what_was_there(client, scan, tmp_path):
+    path, V, F, _, eps = scan
+    work = tmp_path / "work"
+    work.mkdir()
+    (work / "notes.txt").write_text("a user's file")
+    (work / "sub").mkdir()
+    out = tmp_path / "out.ply"
+    out.write_bytes(b"an earlier output")
+    fair_tiled(path, out, eps, client=client, tile_memory=budget(F, 4), work_dir=work)
+    assert sorted(p.name for p in work.iterdir()) == ["notes.txt", "sub"]
+    assert (work / "notes.txt").read_text() == "a user's file"
+    assert np.array_equal(cf.read_mesh(out)[1], F)
