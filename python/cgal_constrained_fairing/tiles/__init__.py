@@ -200,15 +200,15 @@ def _check_keywords(keywords: Dict[str, Any]) -> None:
 
 
 class _cluster:
-    """The caller's client, or a local cluster of single-threaded workers for the run."""
+    """The caller's client, or a local cluster of single-threaded workers for the run; with
+    the threads each task's library loops may take."""
 
     def __init__(self, client):
         self.client, self.cluster = client, None
 
     def __enter__(self):
         if self.client is not None:
-            nthreads = self.client.nthreads()
-            return self.client, max(1, min(nthreads.values(), default=1))
+            return self.client, _threads_per_task(self.client)
         import distributed
         self.cluster = distributed.LocalCluster(n_workers=os.cpu_count() or 1,
                                                 threads_per_worker=1, dashboard_address=None)
@@ -219,6 +219,17 @@ class _cluster:
         if self.cluster is not None:
             self.client.close()
             self.cluster.close()
+
+
+def _threads_per_task(client) -> int:
+    """The cores of a machine over the tasks its workers run at once, the least over the
+    machines: the library's loops of concurrent tasks then share the cores."""
+    cores = client.run(os.cpu_count)
+    on_host: Dict[str, int] = {}
+    for address, threads in client.nthreads().items():
+        host = address.rsplit(":", 1)[0]
+        on_host[host] = on_host.get(host, 0) + threads
+    return max(1, min((cores[a] or 1) // on_host[a.rsplit(":", 1)[0]] for a in cores))
 
 
 class _Run:
