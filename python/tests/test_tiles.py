@@ -169,3 +169,18 @@ def test_work_dir_keeps_what_was_there(client, scan, tmp_path):
     assert sorted(p.name for p in work.iterdir()) == ["notes.txt", "sub"]
     assert (work / "notes.txt").read_text() == "a user's file"
     assert np.array_equal(cf.read_mesh(out)[1], F)
+
+
+def test_a_failed_write_leaves_the_earlier_output(client, scan, tmp_path, monkeypatch):
+    path, V, F, _, eps = scan
+    out = tmp_path / "out.ply"
+    out.write_bytes(b"an earlier output")
+
+    def fails(mapped, partial, *arrays):
+        partial.write_bytes(b"half an output")
+        raise OSError("No space left on device")
+    monkeypatch.setattr(_ply_map, "write_ply", fails)
+    with pytest.raises(OSError, match="No space left"):
+        fair_tiled(path, out, eps, client=client, tile_memory=budget(F, 4))
+    assert out.read_bytes() == b"an earlier output"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]

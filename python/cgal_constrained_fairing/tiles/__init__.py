@@ -329,12 +329,12 @@ class _Run:
         boxes = np.array([_partition.grown(box, margin) for box in tiles.boxes])
         for t, faces in enumerate(_partition.candidate_faces(self.faces, self.points, boxes)):
             np.save(self.folder / "tiles" / f"{t}.candidates.npy", faces)
-        return tiles, self._gather([self.client.submit(_sweeps.build_tile, str(self.folder), t,
+        return tiles, self.client.gather([self.client.submit(_sweeps.build_tile, str(self.folder), t,
                                                        rings, margin, pure=False)
                                     for t in range(tiles.count)])
 
     def _sweep(self, sweep: int, tiles) -> List[Dict[str, Any]]:
-        done = self._gather([self.client.submit(_sweeps.fair_tile, str(self.folder), int(t), sweep,
+        done = self.client.gather([self.client.submit(_sweeps.fair_tile, str(self.folder), int(t), sweep,
                                                 self.epsilon, self.keywords,
                                                 self._max_iterations(sweep), self.threads,
                                                 pure=False, retries=2)
@@ -343,19 +343,18 @@ class _Run:
             _sweeps.apply_tile(self.folder, d["tile"], sweep)
         return done
 
-    def _gather(self, futures):
-        return self.client.gather(futures)
+    def _setting(self, name: str) -> int:
+        """A setting of the run's calls: the user's, or the library's default."""
+        if name in self.keywords:
+            return int(self.keywords[name])
+        method = call_options(self.epsilon, **self.keywords).method
+        return int(_core.default_settings(method)[name])
 
     def _smoothing_steps(self) -> int:
-        options = call_options(self.epsilon, **self.keywords)
-        return int(_core.default_settings(options.method)["initial_smoothing_steps"]
-                   if "initial_smoothing_steps" not in self.keywords
-                   else self.keywords["initial_smoothing_steps"])
+        return self._setting("initial_smoothing_steps")
 
     def _max_iterations(self, sweep: int) -> int:
-        options = call_options(self.epsilon, **self.keywords)
-        most = int(self.keywords.get("max_iterations",
-                                     _core.default_settings(options.method)["max_iterations"]))
+        most = self._setting("max_iterations")
         return most if sweep <= 1 else min(most, SEAM_ITERATIONS)
 
     def _edge_scale(self) -> float:
