@@ -2,7 +2,8 @@
 # Fetches the CGAL demo meshes that fairing_accuracy measures (femur, camel, bull, lion-head,
 # homer, armadillo) and the CAD parts that fairing_features measures (fandisk, joint, blade,
 # part, dragknob, anchor, cube-meshed), and the real scans that point_set_scans and the
-# manual's point set figure read (kitten, oni, hippo, building, of data/points_3), from Debian's
+# manual's point set figure read (kitten, oni, hippo, building, of data/points_3), and the CT
+# label image that label_map_speed.py reads (data/images/liver.inr.gz), from Debian's
 # libcgal-demo package (in /usr/share/doc/libcgal-dev/data.tar.gz), into DIR (default:
 # cgal_demo_data in the current folder, which is where a build folder's benchmarks look).
 #
@@ -24,4 +25,6 @@ mkdir -p "$dir/points_3"
 for name in kitten.xyz oni.pwn hippo1.ply building.ply; do
   cp "$(find "$work" -path "*/data/points_3/$name" | head -1)" "$dir/points_3/"
 done
-echo "CGAL demo meshes in $dir/meshes, scans in $dir/points_3"
+mkdir -p "$dir/images"
+cp "$(find "$work" -path "*/data/images/liver.inr.gz" | head -1)" "$dir/images/"
+echo "CGAL demo meshes in $dir/meshes, scans in $dir/points_3, the liver in $dir/images"

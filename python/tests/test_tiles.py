@@ -2,8 +2,9 @@
 
 One tile is the in-core call bit for bit (the start and the lines along the normals are the
 whole call's); many tiles keep the bound exactly in double, the faces byte for byte, the
-vertices' properties and order, end their sweeps below 1 % of epsilon, and lower the energy
-from the start; bad requests leave every file as it was and nothing of the run behind.
+vertices' properties and order, end their sweeps below 0.5 % of epsilon, and lower the energy
+from the start; a tile's band descends as its whole mesh would with the rest frozen; bad
+requests leave every file as it was and nothing of the run behind.
 """
 
 import hashlib
@@ -12,8 +13,10 @@ import numpy as np
 import pytest
 
 import cgal_constrained_fairing as cf
-from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, fair_tiled
-from cgal_constrained_fairing.tiles import _ply_map
+from cgal_constrained_fairing import _core
+from cgal_constrained_fairing._fairing import call_options, result_of
+from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, MOTION_TOLERANCE, fair_tiled
+from cgal_constrained_fairing.tiles import _partition, _ply_map, _sweeps
 
 from conftest import icosphere, noisy
 
@@ -73,7 +76,7 @@ def test_tiles_keep_bound_faces_properties_and_converge(client, scan, tmp_path):
     assert len(report.colour) >= 8 and report.colour.max() >= 1
     assert report.tile.shape == (len(V),) and set(np.unique(report.tile)) == set(
         range(len(report.colour)))
-    assert report.converged and report.motion[-1] <= 0.01
+    assert report.converged and report.motion[-1] <= MOTION_TOLERANCE
     W, out_faces, carried = cf.read_mesh(out_path, properties=True)
     assert (np.linalg.norm(W - V, axis=1) <= eps).all()
     assert face_block(out_path) == face_block(path)
@@ -184,3 +187,63 @@ def test_a_failed_write_leaves_the_earlier_output(client, scan, tmp_path, monkey
         fair_tiled(path, out, eps, client=client, tile_memory=budget(F, 4))
     assert out.read_bytes() == b"an earlier output"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
+
+
+def test_rings_are_those_of_the_faces():
+    V, F = icosphere(4)
+    rings = _partition.Rings(F, len(V))
+    rng = np.random.default_rng(5)
+    for start in (V[:, 0] > 0.6, rng.random(len(V)) < 0.01, np.zeros(len(V), bool)):
+        reached = start.copy()
+        for count in range(6):
+            assert np.array_equal(rings.within(start, count), reached)
+            # One ring more: every vertex of a face with a vertex reached.
+            reached = reached.copy()
+            reached[F[reached[F].any(axis=1)].ravel()] = True
+
+
+def tile_and_band(V, F, count, t):
+    """Tile `t` of `count` k-d tiles of the mesh (V, F), with its band."""
+    rings = _sweeps.ghost_rings(16)
+    tiles = _partition.kd_tiles(V, count)
+    box = _partition.grown(tiles.boxes[t], 10.0)
+    mesh = _partition.tile_mesh(t, tiles, F, V, rings, box, np.arange(len(F)))
+    return mesh, _partition.band_mesh(mesh, rings)
+
+
+def test_a_band_descends_as_its_tile_with_the_rest_frozen(scan):
+    _, V, F, _, eps = scan
+    mesh, band = tile_and_band(V, F, 4, 0)
+    ghosts = ~mesh.owned
+    assert ghosts[band.vertices].sum() == ghosts.sum()  # every ghost is in the band
+    assert band.free.any() and not band.free.all()
+    assert np.array_equal(band.seam & ~band.free, np.zeros_like(band.seam))
+    free = np.zeros(len(mesh.vertices), bool)
+    free[band.vertices[band.free]] = True
+    assert not (free & ghosts).any()
+    # From a state of the whole call, ten iterations of the band and of the tile with only the
+    # band's vertices free: the same points, up to rounding.
+    current, _ = cf.fair(V, F, eps, max_iterations=30)
+    options = call_options(eps)
+
+    def descend(vertices, faces, owned):
+        outcome = _core.fair_tile(np.ascontiguousarray(V[vertices]),
+                                  np.ascontiguousarray(current[vertices]), faces, owned,
+                                  np.zeros(len(vertices), bool), options, 10)
+        return result_of(outcome)[0]
+    whole = descend(mesh.vertices, mesh.local_faces, free)[band.vertices[band.free]]
+    part = descend(mesh.vertices[band.vertices], band.local_faces, band.free)[band.free]
+    assert np.abs(part - current[mesh.vertices[band.vertices[band.free]]]).max() > 1e-3 * eps
+    assert np.abs(part - whole).max() <= 1e-9 * eps
+
+
+def test_a_scheduler_without_workers_is_a_clear_error(scan, tmp_path, monkeypatch):
+    import distributed
+    import cgal_constrained_fairing.tiles as tiles
+    path, V, F, _, eps = scan
+    monkeypatch.setattr(tiles, "WORKER_WAIT_SECONDS", 1)
+    with distributed.LocalCluster(n_workers=0, dashboard_address=None) as cluster, \
+            distributed.Client(cluster, set_as_default=False) as empty:
+        with pytest.raises(TimeoutError, match="no Dask worker joined the scheduler"):
+            fair_tiled(path, tmp_path / "out.ply", eps, client=empty)
+    assert list(tmp_path.iterdir()) == []

@@ -3,8 +3,10 @@
 `fair_tiled` cuts the mesh into spatial tiles of about `tile_memory` each, every tile with rings
 of its neighbours' vertices (ghosts) around the vertices it owns, and fairs the tiles as Dask
 tasks, in sweeps in which the tiles of one colour (no two sharing a hinge) descend at once with
-their ghosts frozen, from the smoothed start of the whole call where no tile has yet been, until
-the owned vertices move by at most 1 % of epsilon in a sweep (RMS). Every vertex's bound is its own,
+their ghosts frozen, from the smoothed start of the whole call where no tile has yet been; after
+the first sweep only each tile's band (its vertices within 16 rings of its ghosts) descends, over
+the band's part of the tile's mesh, until the vertices next to the ghosts move by at most 0.5 %
+of epsilon in a sweep (RMS). Every vertex's bound is its own,
 so each tile's descent stays within the whole's bound and lowers the whole's objective (a
 Schwarz method); the result approaches the in-core call's. No process holds the whole mesh's
 fairing state: a task holds its tile's, the client the points and the tiles' plan.
@@ -50,13 +52,18 @@ BYTES_PER_TRIANGLE = 600
 # A sweep ends the run when the owned vertices next to the ghosts (the seams) moved by at most
 # this fraction of epsilon in it, as a root mean square: the largest motion does not fall so far,
 # since ten more iterations of the whole call from its own result move single vertices by 0.2
-# to 0.4 epsilon.
-MOTION_TOLERANCE = 0.01
+# to 0.4 epsilon. At 1 % the seams still moved by about 0.8 % a sweep, and the normal error
+# within 3 rings of a tile border stayed 1.21 times the interiors' at 4.8 M triangles (1.88 at
+# 19.3 M); at 0.5 % it was 1.02 times (0.3 %: 0.92, in 11 sweeps instead of 7).
+MOTION_TOLERANCE = 0.005
 MAX_SWEEPS = 20
-# The iterations of a tile's descent in the sweeps after the first, which mend the seams: the
-# first descends each tile to the stopping rule; 10 and 25 left the same distance to the in-core
-# result (0.076 and 0.075 epsilon RMS on the noisy camel in 6 tiles) and the same sweeps.
+# The iterations of a tile's band's descent in the sweeps after the first, which mend the seams:
+# the first descends each tile to the stopping rule; 10 and 25 left the same distance to the
+# in-core result (0.076 and 0.075 epsilon RMS on the noisy camel in 6 tiles) and the same
+# sweeps, and 40 the same seam motions at 4.8 M triangles for 3.6 times the time.
 SEAM_ITERATIONS = 10
+# How long a run waits for a worker when the client's scheduler has none.
+WORKER_WAIT_SECONDS = 60
 
 
 @dataclasses.dataclass(frozen=True, repr=False)
@@ -80,7 +87,8 @@ class TiledReport:
     iterations : list of int
         The iterations of all tiles in each sweep.
     converged : bool
-        Whether the last sweep moved the vertices by at most 1 % of epsilon (root mean square).
+        Whether the last sweep moved the seams' vertices by at most `MOTION_TOLERANCE` (0.5 %)
+        of epsilon (root mean square).
     max_deviation : float
         The largest distance of an output vertex to its input position.
     tile_sizes : numpy.ndarray
@@ -223,13 +231,35 @@ class _cluster:
 
 def _threads_per_task(client) -> int:
     """The cores of a machine over the tasks its workers run at once, the least over the
-    machines: the library's loops of concurrent tasks then share the cores."""
+    machines: the library's loops of concurrent tasks then share the cores. A scheduler with
+    no worker yet (one starting, or scaling up) is given `WORKER_WAIT_SECONDS` for one."""
+    if not client.nthreads():
+        try:
+            client.wait_for_workers(1, timeout=WORKER_WAIT_SECONDS)
+        except TimeoutError:
+            raise TimeoutError(f"no Dask worker joined the scheduler {client.scheduler.address} "
+                               f"within {WORKER_WAIT_SECONDS} s") from None
     cores = client.run(os.cpu_count)
     on_host: Dict[str, int] = {}
     for address, threads in client.nthreads().items():
         host = address.rsplit(":", 1)[0]
         on_host[host] = on_host.get(host, 0) + threads
     return max(1, min((cores[a] or 1) // on_host[a.rsplit(":", 1)[0]] for a in cores))
+
+
+def _fitting_count(count: int, faces: int, largest: int, most: float) -> Optional[int]:
+    """The tiles to cut next, when a cut into `count` tiles of `faces` triangles in all made
+    one of `largest` triangles with its ghosts, over `most`; None when it fits, or when the
+    ghosts alone would fill a tile (a patch of f owned triangles has ghosts g sqrt(f), and
+    f + g sqrt(f) <= most for f up to the square of (sqrt(g^2 + 4 most) - g) / 2)."""
+    if largest <= most:
+        return None
+    own = faces / count
+    ghosts = (largest - own) / math.sqrt(own)
+    if ghosts ** 2 >= most:
+        return None
+    fitting = ((math.sqrt(ghosts ** 2 + 4 * most) - ghosts) / 2) ** 2
+    return max(count + 1, math.ceil(faces / fitting))
 
 
 class _Run:
@@ -270,14 +300,14 @@ class _Run:
         clock = time.perf_counter()
         tiles, built = self._tiles(budget)
         self.seconds["tiles"] = time.perf_counter() - clock
-        colour = _partition.colour_tiles([b["near"] for b in built])
+        adjacent = _partition.adjacency([b["near"] for b in built])
+        colour = _partition.colour_tiles(adjacent)
         sizes = np.array([[b["vertices"], b["faces"]] for b in built])
         motion, largest, iterations = [], [], []
         peak = max(b["peak_memory"] for b in built)
         for sweep in range(1, MAX_SWEEPS + 1):
-            done, clock = [], time.perf_counter()
-            for c in range(colour.max() + 1):
-                done += self._sweep(sweep, np.flatnonzero(colour == c))
+            clock = time.perf_counter()
+            done = self._sweep(sweep, colour, adjacent)
             self.seconds[f"sweep {sweep}"] = time.perf_counter() - clock
             squares = sum(d["squared_motion"] for d in done)
             seam = sum(d["seam"] for d in done)
@@ -297,7 +327,8 @@ class _Run:
         """Tiles whose meshes, ghosts included, fit `budget` at BYTES_PER_TRIANGLE: a first cut
         by the owned triangles alone, then, while the ghosts push a tile over (twice at most),
         a cut sized by the ghosts the last one showed (a patch of f triangles has ghosts in
-        proportion to its border, about sqrt(f))."""
+        proportion to its border, about sqrt(f)). Each cut is judged first on one tile, the
+        cell of most vertices, so that a cut too coarse costs one tile's mesh, not all."""
         rings = _sweeps.ghost_rings(self._smoothing_steps())
         # Rings reach about an edge length each, farther across long edges: half as much again,
         # and build_tile doubles it where they reach farther still.
@@ -305,23 +336,26 @@ class _Run:
         most = budget / BYTES_PER_TRIANGLE
         count = max(1, math.ceil(len(self.faces) / most))
         for attempt in range(3):
-            tiles, built = self._build_tiles(count, rings, margin)
-            largest = max(built, key=lambda b: b["faces"])
-            if largest["faces"] <= most or attempt == 2:
+            tiles = self._cut(count, margin)
+            probe = int(np.argmax(np.bincount(tiles.tile, minlength=tiles.count)))
+            built = self._build_tiles([probe], rings, margin)
+            if built[probe]["faces"] <= most:
+                built = self._build_tiles(range(tiles.count), rings, margin, built)
+            refit = _fitting_count(count, len(self.faces), max(b["faces"] for b in built.values()), most)
+            if refit is None or attempt == 2:
                 break
-            own = len(self.faces) / count
-            ghosts = (largest["faces"] - own) / math.sqrt(own)
-            if ghosts ** 2 >= most:
-                break
-            fitting = ((math.sqrt(ghosts ** 2 + 4 * most) - ghosts) / 2) ** 2
-            count = max(count + 1, math.ceil(len(self.faces) / fitting))
-        if largest["faces"] > most:
-            warnings.warn(f"tiles of {largest['faces']} triangles with their {rings} rings of "
-                          f"ghosts need about {largest['faces'] * BYTES_PER_TRIANGLE} bytes, "
+            count = refit
+        built = self._build_tiles(range(tiles.count), rings, margin, built)
+        largest = max(b["faces"] for b in built.values())
+        if largest > most:
+            warnings.warn(f"tiles of {largest} triangles with their {rings} rings of "
+                          f"ghosts need about {largest * BYTES_PER_TRIANGLE} bytes, "
                           f"more than tile_memory ({budget})")
-        return tiles, built
+        return tiles, [built[t] for t in range(tiles.count)]
 
-    def _build_tiles(self, count: int, rings: int, margin: float):
+    def _cut(self, count: int, margin: float) -> _partition.Tiles:
+        """The k-d cells of at least `count` tiles, and each one's candidate faces, in the
+        run's folder."""
         tiles = _partition.kd_tiles(self.points, count)
         np.save(self.folder / "tile.npy", tiles.tile)
         np.save(self.folder / "boxes.npy", tiles.boxes)
@@ -329,19 +363,44 @@ class _Run:
         boxes = np.array([_partition.grown(box, margin) for box in tiles.boxes])
         for t, faces in enumerate(_partition.candidate_faces(self.faces, self.points, boxes)):
             np.save(self.folder / "tiles" / f"{t}.candidates.npy", faces)
-        return tiles, self.client.gather([self.client.submit(_sweeps.build_tile, str(self.folder), t,
-                                                       rings, margin, pure=False)
-                                    for t in range(tiles.count)])
+        return tiles
 
-    def _sweep(self, sweep: int, tiles) -> List[Dict[str, Any]]:
-        done = self.client.gather([self.client.submit(_sweeps.fair_tile, str(self.folder), int(t), sweep,
-                                                self.epsilon, self.keywords,
-                                                self._max_iterations(sweep), self.threads,
-                                                pure=False, retries=2)
-                             for t in tiles])
-        for d in done:
+    def _build_tiles(self, tiles, rings: int, margin: float, built=None) -> Dict[int, Dict[str, Any]]:
+        """The meshes of `tiles` that `built` does not hold yet, added to it, by tile."""
+        built = dict(built or {})
+        wanted = [int(t) for t in tiles if int(t) not in built]
+        done = self.client.gather([self.client.submit(_sweeps.build_tile, str(self.folder), t, rings,
+                                                      margin, pure=False) for t in wanted])
+        built.update({b["tile"]: b for b in done})
+        return built
+
+    def _sweep(self, sweep: int, colour: np.ndarray, adjacent) -> List[Dict[str, Any]]:
+        """Every tile's descent of `sweep` in the order of the colours, each tile submitted as
+        soon as its neighbours of the colours before its own are applied, not once their whole
+        colours are: a descent reads the points of the hinges it touches alone, all of them
+        its neighbours', so it sees what it would after the colours before (and a task run
+        again reads what it read). Each result is applied as it comes; by tile."""
+        from distributed import as_completed
+        waiting = {t: {s for s in adjacent[t] if colour[s] < colour[t]} for t in range(len(colour))}
+        running = as_completed()
+
+        def submit(t: int) -> None:
+            running.add(self.client.submit(_sweeps.fair_tile, str(self.folder), t, sweep,
+                                           self.epsilon, self.keywords, self._max_iterations(sweep),
+                                           self.threads, pure=False, retries=2))
+        for t in [t for t, before in waiting.items() if not before]:
+            submit(t)
+        done = []
+        for future in running:
+            d = future.result()
             _sweeps.apply_tile(self.folder, d["tile"], sweep)
-        return done
+            done.append(d)
+            for t, before in waiting.items():
+                if d["tile"] in before:
+                    before.discard(d["tile"])
+                    if not before:
+                        submit(t)
+        return sorted(done, key=lambda d: d["tile"])
 
     def _setting(self, name: str) -> int:
         """A setting of the run's calls: the user's, or the library's default."""

@@ -3,13 +3,15 @@
 A tile owns the vertices of one cell of a k-d split of the input points (cells of about equal
 counts). Its mesh is the triangles within ``rings`` rings of its owned vertices, found among the
 triangles with a corner in the cell's box grown by a margin, which one pass over the face array
-finds for all tiles at once. Two tiles get different colours when one's ghosts within
+finds for all tiles at once. Its band is the part of that mesh that the sweeps after the first
+need: the owned vertices within `BAND_RINGS` rings of a ghost, which descend, and the triangles
+within ``rings`` rings of them. Two tiles get different colours when one's ghosts within
 `HINGE_RINGS` rings are owned by the other: the descents of tiles of one colour then touch no
 common hinge, and run at once.
 """
 
 import dataclasses
-from typing import List
+from typing import List, Set
 
 import numpy as np
 
@@ -21,6 +23,10 @@ HINGE_RINGS = 2
 # mended: the sweeps after the first move little else, and a measure over all owned vertices
 # would fall below its tolerance while the seams still moved.
 SEAM_RINGS = 8
+# The rings of owned vertices next to the ghosts that descend in the sweeps after the first:
+# there the first sweep's tiles met ghosts that had not descended yet (or had, while they had
+# not); the vertices deeper in stay where the first sweep left them.
+BAND_RINGS = 16
 
 
 @dataclasses.dataclass
@@ -87,6 +93,18 @@ class Tile_mesh:
     owned: np.ndarray      # (k,) bool
     seam: np.ndarray       # (k,) bool, the owned vertices within SEAM_RINGS rings of a ghost
     near_owners: np.ndarray  # tiles owning vertices within HINGE_RINGS rings
+    rings: "Rings"           # the rings around its vertices, over local_faces
+
+
+@dataclasses.dataclass
+class Band_mesh:
+    """The part of a tile's mesh that descends after the first sweep: its vertices (into the
+    tile's), its triangles over them, which of them descend and which are seam vertices."""
+
+    vertices: np.ndarray     # (b,) int64 into the tile's vertices
+    local_faces: np.ndarray  # (g, 3) int32 into vertices
+    free: np.ndarray         # (b,) bool, the owned vertices within BAND_RINGS rings of a ghost
+    seam: np.ndarray         # (b,) bool, the tile's seam vertices
 
 
 class MarginTooSmall(Exception):
@@ -100,45 +118,79 @@ def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, box, faces) -> 
     vertices, local = np.unique(local, return_inverse=True)
     local = local.reshape(-1, 3)
     owned = tiles.tile[vertices] == t
-    reached = owned.copy()
-    for ring in range(rings):
-        touching = reached[local].any(axis=1)
-        if ring == HINGE_RINGS:
-            near = reached.copy()
-        if ring == rings - 1:
-            inner = reached
-        reached = reached.copy()
-        reached[local[touching].ravel()] = True
-    kept = inner[local].any(axis=1)
-    kept = _closed_fans(local, kept, points[vertices], box)
+    around = Rings(local, len(vertices))
+    near = around.within(owned, HINGE_RINGS)
+    inner = around.within(owned, rings - 1)
+    kept = _closed_fans(local, inner[local].any(axis=1), len(vertices),
+                        lambda bad: _check_inside(points[vertices[bad]], box))
     _check_inside(points[vertices][inner], box)
-    used = np.zeros(len(vertices), bool)
-    used[local[kept].ravel()] = True
-    renumber = np.cumsum(used) - 1
+    used, local_faces = _used_and_renumbered(local, kept, len(vertices))
     near_owners = np.unique(tiles.tile[vertices[near & used]])
-    local_faces = renumber[local[kept]].astype(np.int32)
-    return Tile_mesh(vertices[used], faces[kept], local_faces, owned[used],
-                     _within_rings(~owned[used], local_faces, SEAM_RINGS) & owned[used],
-                     near_owners[near_owners != t])
+    around = Rings(local_faces, int(used.sum()))
+    seam = around.within(~owned[used], SEAM_RINGS) & owned[used]
+    return Tile_mesh(vertices[used], faces[kept], local_faces, owned[used], seam,
+                     near_owners[near_owners != t], around)
 
 
-def _within_rings(start: np.ndarray, faces: np.ndarray, rings: int) -> np.ndarray:
-    reached = start.copy()
-    for _ in range(rings):
-        touching = reached[faces].any(axis=1)
-        reached[faces[touching].ravel()] = True
-    return reached
+def band_mesh(mesh: Tile_mesh, rings: int) -> Band_mesh:
+    """The triangles of `mesh` within `rings` rings of its owned vertices within `BAND_RINGS`
+    rings of a ghost, and which of their vertices descend. The ghosts within `rings` rings of an
+    owned vertex are within as many of one next to a ghost, so the band keeps all of them, and
+    the band's start and normals are the tile's at its descending vertices."""
+    free = mesh.rings.within(~mesh.owned, BAND_RINGS) & mesh.owned
+    inner = mesh.rings.within(free, rings - 1)
+    n = len(mesh.owned)
+    kept = _closed_fans(mesh.local_faces, inner[mesh.local_faces].any(axis=1), n)
+    used, local_faces = _used_and_renumbered(mesh.local_faces, kept, n)
+    return Band_mesh(np.flatnonzero(used), local_faces, free[used], mesh.seam[used])
 
 
-def _closed_fans(local: np.ndarray, kept: np.ndarray, points: np.ndarray, box) -> np.ndarray:
+def _used_and_renumbered(faces: np.ndarray, kept: np.ndarray, n: int):
+    """Which of `n` vertices the `kept` faces use, and those faces over them alone."""
+    used = np.zeros(n, bool)
+    used[faces[kept].ravel()] = True
+    return used, (np.cumsum(used) - 1)[faces[kept]].astype(np.int32)
+
+
+class Rings:
+    """The rings of vertices around sets of vertices of a triangle mesh: each vertex's faces
+    from one sort of the corners, then one ring at a time over the faces of the vertices the
+    last ring reached."""
+
+    def __init__(self, faces: np.ndarray, n: int):
+        self.faces = faces
+        corners = faces.ravel()
+        self.order = np.argsort(corners, kind="stable")
+        self.first = np.searchsorted(corners[self.order], np.arange(n + 1))
+
+    def within(self, start: np.ndarray, rings: int) -> np.ndarray:
+        """The vertices within `rings` rings of those of `start` ((n,) bool)."""
+        reached = start.copy()
+        frontier = np.flatnonzero(start)
+        for _ in range(rings):
+            if frontier.size == 0:
+                break
+            counts = self.first[frontier + 1] - self.first[frontier]
+            # The positions in `order` of the frontier's corners, run by run.
+            runs = (np.repeat(self.first[frontier] - np.cumsum(counts) + counts, counts)
+                    + np.arange(counts.sum()))
+            near = self.faces[self.order[runs] // 3].ravel()
+            frontier = np.unique(near[~reached[near]])
+            reached[frontier] = True
+        return reached
+
+
+def _closed_fans(local: np.ndarray, kept: np.ndarray, n: int, check=None) -> np.ndarray:
     """`kept` with the whole fan of each vertex whose kept triangles form more than one fan
-    (a vertex on more than two border edges), so that the tile is a manifold mesh."""
+    (a vertex on more than two border edges), so that the tile is a manifold mesh; `check`
+    is called on the vertices whose fans are added."""
     for _ in range(64):
-        bad = _split_fan_vertices(local[kept], len(points))
+        bad = _split_fan_vertices(local[kept], n)
         if bad.size == 0:
             return kept
-        _check_inside(points[bad], box)
-        is_bad = np.zeros(len(points), bool)
+        if check is not None:
+            check(bad)
+        is_bad = np.zeros(n, bool)
         is_bad[bad] = True
         kept = kept | is_bad[local].any(axis=1)
     raise MarginTooSmall()
@@ -158,15 +210,21 @@ def _check_inside(p: np.ndarray, box) -> None:
         raise MarginTooSmall()
 
 
-def colour_tiles(neighbours: List[np.ndarray]) -> np.ndarray:
-    """Greedy colours of the tiles, no two neighbours alike (a tile's neighbours: the tiles
-    owning its near ghosts, taken both ways)."""
-    count = len(neighbours)
-    adjacent = [set() for _ in range(count)]
+def adjacency(neighbours: List[np.ndarray]) -> List[Set[int]]:
+    """Each tile's neighbours, taken both ways (a tile's own: the tiles owning its ghosts
+    within `HINGE_RINGS` rings)."""
+    adjacent: List[Set[int]] = [set() for _ in neighbours]
     for t, near in enumerate(neighbours):
         for s in near:
             adjacent[t].add(int(s))
             adjacent[int(s)].add(t)
+    return adjacent
+
+
+def colour_tiles(adjacent: List[Set[int]]) -> np.ndarray:
+    """Greedy colours of the tiles, no two neighbours alike, the tiles of most neighbours
+    first."""
+    count = len(adjacent)
     colour = np.full(count, -1)
     for t in sorted(range(count), key=lambda t: -len(adjacent[t])):
         taken = {colour[s] for s in adjacent[t]}

@@ -51,20 +51,24 @@ def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]
             margin *= 2
             faces = _partition.candidate_faces(corners, points,
                                                _partition.grown(tiles.boxes[t], margin)[None])[0]
+    band = _partition.band_mesh(mesh, rings)
     _save(root / "tiles" / f"{t}.npz", vertices=mesh.vertices, faces=mesh.local_faces,
           owned=mesh.owned, seam=mesh.seam)
+    _save(root / "tiles" / f"{t}.band.npz", vertices=mesh.vertices[band.vertices],
+          faces=band.local_faces, owned=band.free, seam=band.seam)
     return {"tile": t, "near": mesh.near_owners, "vertices": len(mesh.vertices),
             "faces": len(mesh.local_faces), "owned": int(mesh.owned.sum()),
-            "peak_memory": peak_memory()}
+            "band_faces": len(band.local_faces), "peak_memory": peak_memory()}
 
 
 def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[str, Any],
               max_iterations: int, threads: int) -> Dict[str, Any]:
     """Tile `t`'s owned vertices faired from the current points, written to the tile's file
-    for `sweep`; the vertices no tile has faired yet start at the smoothed start."""
+    for `sweep`; the vertices no tile has faired yet start at the smoothed start. After the
+    first sweep, only the tile's band descends, over the band's mesh."""
     set_max_threads(threads)
     root = Path(folder)
-    tile = np.load(root / "tiles" / f"{t}.npz")
+    tile = np.load(root / "tiles" / (f"{t}.npz" if sweep == 1 else f"{t}.band.npz"))
     vertices, owned = tile["vertices"], tile["owned"]
     X0 = np.ascontiguousarray(open_array(root / "input.npy")[vertices])
     current = np.ascontiguousarray(open_array(root / "state.npy")[vertices])
@@ -101,7 +105,7 @@ def peak_memory() -> int:
 def apply_tile(folder: Path, t: int, sweep: int) -> None:
     """Tile `t`'s points of `sweep` into the run's current points, deviations and flags; its
     owned vertices are faired from now on."""
-    tile = np.load(folder / "tiles" / f"{t}.npz")
+    tile = np.load(folder / "tiles" / (f"{t}.npz" if sweep == 1 else f"{t}.band.npz"))
     result_path = folder / "tiles" / f"{t}.sweep{sweep}.npz"
     result = np.load(result_path)
     rows = tile["vertices"][tile["owned"]]
