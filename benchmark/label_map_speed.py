@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 
 import cgal_constrained_fairing as cf
+from benchmark_machine import cpu_model
 
 ROOT = Path(__file__).resolve().parents[1]
 TEMPLATES = Path("/usr/share/mricron/templates")
@@ -48,17 +49,6 @@ MAPS = {
 }
 SLICER_ITERATIONS = 20
 SLICER_SMOOTHING_FACTOR = 0.5
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def median_seconds(run, runs):

@@ -38,28 +38,11 @@ from pathlib import Path
 import numpy as np
 
 import cgal_constrained_fairing as cf
+from benchmark_machine import cores, cpu_model
 
 ROOT = Path(__file__).resolve().parents[1]
 BUNDLED = ["head.off", "elephant.off", "bunny00.off"]
 DEMO = ["femur.off", "homer.off", "bull.off", "lion-head.off", "camel.off", "armadillo.off"]
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
-
-
-def cores():
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:
-        return os.cpu_count() or 1
 
 
 def machine_line():

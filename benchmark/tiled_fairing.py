@@ -21,7 +21,6 @@ printed with the figures.
 
 import argparse
 import os
-import platform
 import statistics
 import subprocess
 import sys
@@ -32,20 +31,11 @@ from pathlib import Path
 import numpy as np
 
 import cgal_constrained_fairing as cf
+from benchmark_machine import cpu_model
 from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, fair_tiled
 from cgal_constrained_fairing.tiles._sweeps import peak_memory
 
 IN_CORE_BYTES_PER_TRIANGLE = 340
-
-
-def cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def write_case(build: Path, level: int, mesh, folder: Path):
