@@ -8,6 +8,10 @@ requests leave every file as it was and nothing of the run behind.
 """
 
 import hashlib
+import os
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -138,12 +142,17 @@ def test_a_defect_in_a_tile_is_an_input_error(client, tmp_path):
 
 
 def test_command_line(scan, tmp_path, capsys):
+    # In a process of its own, as users run it: its local cluster's client is no default one.
     from cgal_constrained_fairing.tiles._command_line import main
     path, V, F, _, eps = scan
     out = tmp_path / "out.ply"
-    tile_memory = str(budget(F, 4))
-    assert main([str(path), str(out), "--eps", "0.25h", "--tile-memory", tile_memory]) == 0
-    assert "converged=True" in capsys.readouterr().out
+    environment = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(Path(cf.__file__).resolve().parents[1])] + [p for p in [os.environ.get("PYTHONPATH")] if p]))
+    run = subprocess.run([sys.executable, "-m", "cgal_constrained_fairing.tiles", str(path), str(out),
+                          "--eps", "0.25h", "--tile-memory", str(budget(F, 4))],
+                         env=environment, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "converged=True" in run.stdout
     W, out_faces = cf.read_mesh(out)
     assert np.array_equal(out_faces, F)
     assert (np.linalg.norm(W - V, axis=1) <= eps).all()
@@ -247,3 +256,27 @@ def test_a_scheduler_without_workers_is_a_clear_error(scan, tmp_path, monkeypatc
         with pytest.raises(TimeoutError, match="no Dask worker joined the scheduler"):
             fair_tiled(path, tmp_path / "out.ply", eps, client=empty)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_task_lost_after_its_write_is_run_again_with_the_same_result(scan, tmp_path, monkeypatch):
+    # A worker lost after a task wrote its file but before Dask heard of it: Dask runs the task
+    # again (its retries), which writes the same file; the output is the same bit for bit. The
+    # loss is marked in a file: Dask hands its workers a copy of the function and its closure.
+    import distributed
+    path, V, F, _, eps = scan
+    fair_tile, marker = _sweeps.fair_tile, tmp_path / "lost"
+
+    def lost_once(folder, t, sweep, *arguments):
+        done = fair_tile(folder, t, sweep, *arguments)
+        if (t, sweep) == (0, 2) and not marker.exists():
+            marker.write_text("tile 0, sweep 2")
+            raise RuntimeError("worker lost")
+        return done
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster, set_as_default=False) as in_process:
+        fair_tiled(path, tmp_path / "kept.ply", eps, client=in_process, tile_memory=budget(F, 8))
+        monkeypatch.setattr(_sweeps, "fair_tile", lost_once)
+        fair_tiled(path, tmp_path / "lost.ply", eps, client=in_process, tile_memory=budget(F, 8))
+    assert marker.read_text() == "tile 0, sweep 2"
+    assert (tmp_path / "lost.ply").read_bytes() == (tmp_path / "kept.ply").read_bytes()

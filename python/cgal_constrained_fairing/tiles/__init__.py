@@ -382,14 +382,14 @@ class _Run:
         again reads what it read). Each result is applied as it comes; by tile."""
         from distributed import as_completed
         waiting = {t: {s for s in adjacent[t] if colour[s] < colour[t]} for t in range(len(colour))}
-        running = as_completed()
 
-        def submit(t: int) -> None:
-            running.add(self.client.submit(_sweeps.fair_tile, str(self.folder), t, sweep,
-                                           self.epsilon, self.keywords, self._max_iterations(sweep),
-                                           self.threads, pure=False, retries=2))
-        for t in [t for t, before in waiting.items() if not before]:
-            submit(t)
+        def submit(t: int):
+            return self.client.submit(_sweeps.fair_tile, str(self.folder), t, sweep, self.epsilon,
+                                      self.keywords, self._max_iterations(sweep), self.threads,
+                                      pure=False, retries=2)
+        # On the run's client's loop: Dask's default client may be another, or none.
+        running = as_completed([submit(t) for t, before in waiting.items() if not before],
+                               loop=self.client.loop)
         done = []
         for future in running:
             d = future.result()
@@ -399,7 +399,7 @@ class _Run:
                 if d["tile"] in before:
                     before.discard(d["tile"])
                     if not before:
-                        submit(t)
+                        running.add(submit(t))
         return sorted(done, key=lambda d: d["tile"])
 
     def _setting(self, name: str) -> int:
