@@ -10,7 +10,9 @@
 // then descend from where the earlier sweeps left them, every ghost frozen there
 // (Fairing_problem::fair_part): each tile's descent lowers the whole's objective within the
 // whole's bound, so that sweeps over tiles that share no hinge descend it as one problem does
-// (a Schwarz method).
+// (a Schwarz method). fair_tiled()'s first sweep lets the ghosts near a tile's vertices descend
+// too and keeps its own vertices' points alone (an overlap), so that they are not bent towards
+// ghosts still at the smoothed start.
 
 #ifndef CONSTRAINED_FAIRING_FRONT_END_TILE_FAIRING_H
 #define CONSTRAINED_FAIRING_FRONT_END_TILE_FAIRING_H

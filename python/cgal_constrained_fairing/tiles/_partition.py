@@ -6,8 +6,9 @@ triangles with a corner in the cell's box grown by a margin, which one pass over
 finds for all tiles at once. Its band is the part of that mesh that the sweeps after the first
 need: the owned vertices within `BAND_RINGS` rings of a ghost, which descend, and the triangles
 within ``rings`` rings of them. Two tiles get different colours when one's ghosts within
-`HINGE_RINGS` rings are owned by the other: the descents of tiles of one colour then touch no
-common hinge, and run at once.
+`OVERLAP_RINGS` + `HINGE_RINGS` rings are owned by the other: the descents of tiles of one colour
+then read none of each other's points (those of the hinges of the vertices they move), and run
+at once.
 """
 
 import dataclasses
@@ -27,6 +28,11 @@ SEAM_RINGS = 8
 # there the first sweep's tiles met ghosts that had not descended yet (or had, while they had
 # not); the vertices deeper in stay where the first sweep left them.
 BAND_RINGS = 16
+# The rings of ghosts that descend with a tile's owned vertices in the first sweep, their points
+# then dropped (an overlap, as in restricted Schwarz methods): ghosts frozen at the smoothed
+# start, where no tile has faired them yet, bent the owned vertices next to them, and the sweeps
+# after the first mended that kink slowly.
+OVERLAP_RINGS = 8
 
 
 @dataclasses.dataclass
@@ -85,14 +91,16 @@ def grown(box: np.ndarray, margin: float) -> np.ndarray:
 @dataclasses.dataclass
 class Tile_mesh:
     """One tile's triangles, over its vertices (global ids), which vertices it owns, and the
-    owners of its ghosts within `HINGE_RINGS` rings."""
+    owners of its ghosts within `OVERLAP_RINGS` + `HINGE_RINGS` rings, whose points its
+    descents read."""
 
     vertices: np.ndarray   # (k,) int64, global ids
     faces: np.ndarray      # (f,) int64 global face ids, in the input's order
     local_faces: np.ndarray  # (f, 3) int32 into vertices
     owned: np.ndarray      # (k,) bool
     seam: np.ndarray       # (k,) bool, the owned vertices within SEAM_RINGS rings of a ghost
-    near_owners: np.ndarray  # tiles owning vertices within HINGE_RINGS rings
+    overlap: np.ndarray    # (k,) bool, the vertices within OVERLAP_RINGS rings of an owned one
+    near_owners: np.ndarray  # tiles owning vertices within OVERLAP_RINGS + HINGE_RINGS rings
     rings: "Rings"           # the rings around its vertices, over local_faces
 
 
@@ -119,7 +127,7 @@ def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, box, faces) -> 
     local = local.reshape(-1, 3)
     owned = tiles.tile[vertices] == t
     around = Rings(local, len(vertices))
-    near = around.within(owned, HINGE_RINGS)
+    near = around.within(owned, OVERLAP_RINGS + HINGE_RINGS)
     inner = around.within(owned, rings - 1)
     kept = _closed_fans(local, inner[local].any(axis=1), len(vertices),
                         lambda bad: _check_inside(points[vertices[bad]], box))
@@ -128,7 +136,8 @@ def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, box, faces) -> 
     near_owners = np.unique(tiles.tile[vertices[near & used]])
     around = Rings(local_faces, int(used.sum()))
     seam = around.within(~owned[used], SEAM_RINGS) & owned[used]
-    return Tile_mesh(vertices[used], faces[kept], local_faces, owned[used], seam,
+    overlap = around.within(owned[used], OVERLAP_RINGS)
+    return Tile_mesh(vertices[used], faces[kept], local_faces, owned[used], seam, overlap,
                      near_owners[near_owners != t], around)
 
 

@@ -53,7 +53,7 @@ def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]
                                                _partition.grown(tiles.boxes[t], margin)[None])[0]
     band = _partition.band_mesh(mesh, rings)
     _save(root / "tiles" / f"{t}.npz", vertices=mesh.vertices, faces=mesh.local_faces,
-          owned=mesh.owned, seam=mesh.seam)
+          owned=mesh.owned, seam=mesh.seam, overlap=mesh.overlap)
     _save(root / "tiles" / f"{t}.band.npz", vertices=mesh.vertices[band.vertices],
           faces=band.local_faces, owned=band.free, seam=band.seam)
     return {"tile": t, "near": mesh.near_owners, "vertices": len(mesh.vertices),
@@ -64,8 +64,9 @@ def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]
 def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[str, Any],
               max_iterations: int, threads: int) -> Dict[str, Any]:
     """Tile `t`'s owned vertices faired from the current points, written to the tile's file
-    for `sweep`; the vertices no tile has faired yet start at the smoothed start. After the
-    first sweep, only the tile's band descends, over the band's mesh."""
+    for `sweep`; the vertices no tile has faired yet start at the smoothed start. In the first
+    sweep the ghosts of the tile's overlap descend too, their points dropped; after it, only
+    the tile's band descends, over the band's mesh."""
     set_max_threads(threads)
     root = Path(folder)
     tile = np.load(root / "tiles" / (f"{t}.npz" if sweep == 1 else f"{t}.band.npz"))
@@ -74,7 +75,8 @@ def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[st
     current = np.ascontiguousarray(open_array(root / "state.npy")[vertices])
     at_start = open_array(root / "faired.npy")[vertices] == 0
     options = call_options(epsilon, **keywords)
-    outcome = _core.fair_tile(X0, current, tile["faces"], owned, at_start, options,
+    free = tile["overlap"] if sweep == 1 else owned
+    outcome = _core.fair_tile(X0, current, tile["faces"], free, at_start, options,
                               max_iterations)
     W, report = result_of(outcome)
     moved = np.linalg.norm(W - current, axis=1)
