@@ -62,9 +62,11 @@ def ours_in_phases(labels, affine, runs):
     parts, result = [], None
     for _ in range(runs):
         marks = []
+
+        def progress(iteration, energy):
+            marks.append(time.perf_counter())
         start = time.perf_counter()
-        result = cf.label_surfaces(labels, affine=affine,
-                                   progress=lambda iteration, energy: marks.append(time.perf_counter()))
+        result = cf.label_surfaces(labels, affine=affine, progress=progress)
         end = time.perf_counter()
         parts.append((end - start, marks[0] - start, marks[-1] - marks[0], end - marks[-1]))
     return [statistics.median(p[k] for p in parts) for k in range(4)], result
