@@ -3,6 +3,9 @@
 
     PYTHONPATH=build/python /usr/bin/python3 benchmark/tiled_fairing.py [--build build]
         [--levels 2 3] [--runs 1] [--workers 2] [--worker-memory FRACTION] [--mesh MESH]
+        [--crossing]
+    PYTHONPATH=build/python /usr/bin/python3 benchmark/tiled_fairing.py --case NOISY.ply
+        --worker-limit 5GiB [--workers 2]
 
 For each level L, ``benchmark/fairing_call --write-case`` writes the bundled bunny (or MESH)
 Loop subdivided L times with seeded noise of 0.25 h (binary PLY) and the clean subdivided mesh;
@@ -17,9 +20,19 @@ mean angle between corresponding face normals, and the tiled result's normal err
 rings of a tile border against the tiles' interiors; the bound, the faces, each worker's peak
 memory against its limit, the sweeps and their motions. The CPU model and the threads are
 printed with the figures.
+
+With ``--crossing``, a second tiled run cuts each cell across its second widest extent instead
+of its widest, so that its tile borders cross the first's tiles; printed: the two results'
+RMS and largest difference, over all vertices and over the first run's border vertices 3 rings
+or more from the second's. ``--case`` takes a noisy binary PLY mesh too large for the in-core
+call (``fairing_call --write-case NOISY.ply --level 5`` writes the bunny at 77 M triangles):
+epsilon is 0.25 times its mean edge length, the tiled runs (the second crossing) have workers
+of ``--worker-limit`` each, and the client's peak memory in each run is printed.
 """
 
 import argparse
+import contextlib
+import functools
 import os
 import statistics
 import subprocess
@@ -32,7 +45,7 @@ import numpy as np
 
 import cgal_constrained_fairing as cf
 from benchmark_machine import cpu_model
-from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, fair_tiled
+from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, _partition, _ply_map, fair_tiled
 from cgal_constrained_fairing.tiles._sweeps import peak_memory
 
 IN_CORE_BYTES_PER_TRIANGLE = 340
@@ -106,18 +119,46 @@ def worker_base(workers):
         return max(client.run(resident).values())
 
 
-def tiled(noisy, out, eps, runs, workers, limit, tile_memory):
+@contextlib.contextmanager
+def cut(crossing):
+    """The tiles cut across each cell's widest extent, or its second widest (`crossing`)."""
+    widest = _partition.kd_tiles
+    if crossing:
+        _partition.kd_tiles = functools.partial(widest, across=1)
+    try:
+        yield
+    finally:
+        _partition.kd_tiles = widest
+
+
+def tiled(noisy, out, eps, runs, workers, limit, tile_memory, crossing=False):
+    """The report, the median time, the workers' peaks and the client's peak of the runs."""
     import distributed
-    times = []
+    times, client_peak = [], 0
     for _ in range(runs):
         with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, memory_limit=limit,
                                       dashboard_address=None) as cluster, \
-                distributed.Client(cluster) as client:
+                distributed.Client(cluster) as client, cut(crossing):
+            with open("/proc/self/clear_refs", "w") as f:
+                f.write("5")  # this process's peak from here on
             start = time.perf_counter()
             report = fair_tiled(noisy, out, eps, client=client, tile_memory=tile_memory)
             times.append(time.perf_counter() - start)
+            client_peak = max(client_peak, peak_memory())
             peaks = client.run(peak_memory)
-    return report, statistics.median(times), peaks
+    return report, statistics.median(times), peaks, client_peak
+
+
+def compare_cuts(first, second, T1, T2, F, eps):
+    """The two runs' results apart, over all vertices and the first's border vertices 3 rings
+    or more from the second's borders."""
+    d = np.linalg.norm(T1 - T2, axis=1) / eps
+    near_first, near_second = (rings_from_border(r.tile, F) for r in (first, second))
+    apart = (near_first == 0) & (near_second > 3)
+    print(f"  crossing cut against the first: RMS {np.sqrt(np.mean(d ** 2)):.4f} eps, largest "
+          f"{d.max():.4f} eps; on the first's {int(apart.sum())} border vertices 3 rings or more "
+          f"from the second's borders (of {int((near_first == 0).sum())}): RMS "
+          f"{np.sqrt(np.mean(d[apart] ** 2)):.4f} eps, largest {d[apart].max(initial=0):.4f} eps")
 
 
 def measure(args, level, folder):
@@ -131,7 +172,7 @@ def measure(args, level, folder):
     # Dask pauses a worker at 80 % of its limit: the tiles get 60 % of what is above the base.
     limit, tile_memory = base + share, int(0.6 * share)
     out = folder / f"tiled_{level}.ply"
-    report, t_tiled, peaks = tiled(noisy, out, eps, args.runs, args.workers, limit, tile_memory)
+    report, t_tiled, peaks, _ = tiled(noisy, out, eps, args.runs, args.workers, limit, tile_memory)
     T, F_out = cf.read_mesh(out)
     print(f"level {level}: {len(V)} vertices, {len(F)} triangles, eps 0.25 h = {eps:.6g}; "
           f"medians of {args.runs} runs")
@@ -161,6 +202,47 @@ def measure(args, level, folder):
           f"{report.peak_memory / 2 ** 20:.0f}) against a limit of "
           f"{limit / 2 ** 20:.0f} MiB (an idle worker {base / 2 ** 20:.0f} MiB, the in-core call "
           f"about {IN_CORE_BYTES_PER_TRIANGLE * len(F) / 2 ** 20:.0f} MiB more)")
+    if args.crossing:
+        second, _, _, _ = tiled(noisy, folder / "crossing.ply", eps, 1, args.workers, limit,
+                                tile_memory, crossing=True)
+        compare_cuts(report, second, T, cf.read_mesh(folder / "crossing.ply")[0], F, eps)
+
+
+def mapped_points(path):
+    records = _ply_map.map_ply(path).vertices()
+    return np.stack([records[name] for name in "xyz"], axis=1).astype(np.float64)
+
+
+def measure_case(args, folder):
+    """The mesh of --case, too large for the in-core call, in two tiled runs, the second's cut
+    crossing the first's."""
+    from dask.utils import format_bytes, parse_bytes
+    from cgal_constrained_fairing.batch._epsilon import mesh_epsilon, parse_eps
+    mapped = _ply_map.map_ply(args.case)
+    F = np.asarray(mapped.faces()["corners"], np.int32)
+    V = mapped_points(args.case)
+    eps = mesh_epsilon(parse_eps("0.25h"), V, F)
+    base = worker_base(args.workers)
+    limit = parse_bytes(args.worker_limit)
+    tile_memory = int(0.6 * (limit - base))
+    print(f"{args.case}: {len(V)} vertices, {len(F)} triangles, eps 0.25 h = {eps:.6g}; workers "
+          f"of {format_bytes(limit)} (idle {format_bytes(base)}), tiles of {format_bytes(tile_memory)}")
+    runs = []
+    for crossing in (False, True):
+        out = folder / f"tiled_{int(crossing)}.ply"
+        report, seconds, peaks, client_peak = tiled(args.case, out, eps, 1, args.workers, limit,
+                                                    tile_memory, crossing)
+        T = mapped_points(out)
+        print(f"  {'crossing' if crossing else 'widest'} cut: {seconds:.1f} s, {report!r}")
+        print("    phases (s): " + ", ".join(f"{k} {v:.1f}" for k, v in report.seconds.items()))
+        print(f"    sweep motions (RMS, eps) {[round(m, 4) for m in report.motion]}; bound holds: "
+              f"{bool((np.linalg.norm(T - V, axis=1) <= eps).all())}; faces identical: "
+              f"{bool(np.array_equal(np.asarray(_ply_map.map_ply(out).faces()['corners']), F))}; "
+              f"peaks: client {client_peak / 2 ** 30:.2f} GiB, workers "
+              f"{sorted(round(p / 2 ** 30, 2) for p in peaks.values())} GiB")
+        runs.append((report, T))
+        sys.stdout.flush()
+    compare_cuts(runs[0][0], runs[1][0], runs[0][1], runs[1][1], F, eps)
 
 
 def main():
@@ -171,12 +253,19 @@ def main():
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--worker-memory", type=float, default=0.5)
     parser.add_argument("--mesh", default="")
+    parser.add_argument("--crossing", action="store_true")
+    parser.add_argument("--case", type=Path)
+    parser.add_argument("--worker-limit", default="5GiB")
     args = parser.parse_args()
     if not (args.build / "benchmark" / "fairing_call").exists():
         print(f"skipped: {args.build}/benchmark/fairing_call is not built")
         return 0
     print(f"{cpu_model()}, {os.cpu_count()} CPUs; in-core on {cf.max_threads()} threads, tiles on "
           f"{args.workers} workers of 1 thread; tiles sized at {BYTES_PER_TRIANGLE} bytes per triangle")
+    if args.case:
+        with tempfile.TemporaryDirectory(dir=args.case.parent) as folder:
+            measure_case(args, Path(folder))
+        return 0
     with tempfile.TemporaryDirectory() as folder:
         for level in args.levels:
             measure(args, level, Path(folder))

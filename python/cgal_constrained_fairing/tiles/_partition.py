@@ -47,9 +47,10 @@ class Tiles:
         return len(self.boxes)
 
 
-def kd_tiles(points: np.ndarray, count: int) -> Tiles:
-    """`points` split into at least `count` cells of about equal counts, each cut across its
-    widest extent at its median."""
+def kd_tiles(points: np.ndarray, count: int, across: int = 0) -> Tiles:
+    """`points` split into at least `count` cells of about equal counts, each cut at its median
+    across its widest extent, or its second widest for `across` 1: a cut whose borders cross the
+    first's, which shows how far a result depends on where the borders lie."""
     tile = np.zeros(len(points), np.int32)
     cells = [np.arange(len(points))]
     while len(cells) < count:
@@ -59,7 +60,7 @@ def kd_tiles(points: np.ndarray, count: int) -> Tiles:
             cells.append(members)
             break
         p = points[members]
-        axis = int(np.argmax(p.max(axis=0) - p.min(axis=0)))
+        axis = int(np.argsort(p.min(axis=0) - p.max(axis=0))[across])
         order = np.argpartition(p[:, axis], len(members) // 2)
         cells += [members[order[:len(members) // 2]], members[order[len(members) // 2:]]]
     boxes = np.empty((len(cells), 2, 3))
