@@ -5,7 +5,7 @@
         [--levels 2 3] [--runs 1] [--workers 2] [--worker-memory FRACTION] [--mesh MESH]
         [--crossing]
     PYTHONPATH=build/python /usr/bin/python3 benchmark/tiled_fairing.py --case NOISY.ply
-        --worker-limit 5GiB [--workers 2]
+        --worker-limit 5GiB [--workers 2] [--keep DIR]
 
 For each level L, ``benchmark/fairing_call --write-case`` writes the bundled bunny (or MESH)
 Loop subdivided L times with seeded noise of 0.25 h (binary PLY) and the clean subdivided mesh;
@@ -27,7 +27,9 @@ RMS and largest difference, over all vertices and over the first run's border ve
 or more from the second's. ``--case`` takes a noisy binary PLY mesh too large for the in-core
 call (``fairing_call --write-case NOISY.ply --level 5`` writes the bunny at 77 M triangles):
 epsilon is 0.25 times its mean edge length, the tiled runs (the second crossing) have workers
-of ``--worker-limit`` each, and the client's peak memory in each run is printed.
+of ``--worker-limit`` each, and the client's peak memory in each run is printed. With ``--keep
+DIR`` the outputs and tiles stay in DIR, and a run whose output is there already is not made
+again (runs of two commits compared).
 """
 
 import argparse
@@ -151,9 +153,9 @@ def tiled(noisy, out, eps, runs, workers, limit, tile_memory, crossing=False):
 
 def compare_cuts(first, second, T1, T2, F, eps):
     """The two runs' results apart, over all vertices and the first's border vertices 3 rings
-    or more from the second's borders."""
+    or more from the second's borders (`first`, `second`: each vertex's tile in each run)."""
     d = np.linalg.norm(T1 - T2, axis=1) / eps
-    near_first, near_second = (rings_from_border(r.tile, F) for r in (first, second))
+    near_first, near_second = (rings_from_border(tile, F) for tile in (first, second))
     apart = (near_first == 0) & (near_second > 3)
     print(f"  crossing cut against the first: RMS {np.sqrt(np.mean(d ** 2)):.4f} eps, largest "
           f"{d.max():.4f} eps; on the first's {int(apart.sum())} border vertices 3 rings or more "
@@ -205,7 +207,8 @@ def measure(args, level, folder):
     if args.crossing:
         second, _, _, _ = tiled(noisy, folder / "crossing.ply", eps, 1, args.workers, limit,
                                 tile_memory, crossing=True)
-        compare_cuts(report, second, T, cf.read_mesh(folder / "crossing.ply")[0], F, eps)
+        compare_cuts(report.tile, second.tile, T, cf.read_mesh(folder / "crossing.ply")[0], F,
+                     eps)
 
 
 def mapped_points(path):
@@ -227,22 +230,35 @@ def measure_case(args, folder):
     tile_memory = int(0.6 * (limit - base))
     print(f"{args.case}: {len(V)} vertices, {len(F)} triangles, eps 0.25 h = {eps:.6g}; workers "
           f"of {format_bytes(limit)} (idle {format_bytes(base)}), tiles of {format_bytes(tile_memory)}")
+    keep = args.keep or folder
     runs = []
-    for crossing in (False, True):
-        out = folder / f"tiled_{int(crossing)}.ply"
-        report, seconds, peaks, client_peak = tiled(args.case, out, eps, 1, args.workers, limit,
-                                                    tile_memory, crossing)
-        T = mapped_points(out)
-        print(f"  {'crossing' if crossing else 'widest'} cut: {seconds:.1f} s, {report!r}")
-        print("    phases (s): " + ", ".join(f"{k} {v:.1f}" for k, v in report.seconds.items()))
-        print(f"    sweep motions (RMS, eps) {[round(m, 4) for m in report.motion]}; bound holds: "
-              f"{bool((np.linalg.norm(T - V, axis=1) <= eps).all())}; faces identical: "
-              f"{bool(np.array_equal(np.asarray(_ply_map.map_ply(out).faces()['corners']), F))}; "
-              f"peaks: client {client_peak / 2 ** 30:.2f} GiB, workers "
-              f"{sorted(round(p / 2 ** 30, 2) for p in peaks.values())} GiB")
-        runs.append((report, T))
+    for cut in ("widest", "crossing"):
+        out, tile = keep / f"tiled_{cut}.ply", keep / f"tile_{cut}.npy"
+        if out.exists() and tile.exists():
+            print(f"  {cut} cut: {out} of an earlier run")
+        else:
+            report, seconds, peaks, client_peak = tiled(args.case, out, eps, 1, args.workers,
+                                                        limit, tile_memory, cut == "crossing")
+            np.save(tile, report.tile)
+            print_case_run(cut, report, seconds, peaks, client_peak, out, V, F, eps)
+        runs.append((np.load(tile), mapped_points(out)))
         sys.stdout.flush()
     compare_cuts(runs[0][0], runs[1][0], runs[0][1], runs[1][1], F, eps)
+
+
+def print_case_run(cut, report, seconds, peaks, client_peak, out, V, F, eps):
+    T = mapped_points(out)
+    print(f"  {cut} cut: {seconds:.1f} s, {report!r}")
+    print(f"    tiles: {len(report.colour)}, vertices with ghosts {report.tile_sizes[:, 0].min()} "
+          f"to {report.tile_sizes[:, 0].max()}, triangles {report.tile_sizes[:, 1].min()} to "
+          f"{report.tile_sizes[:, 1].max()}; iterations by sweep {report.iterations}")
+    print("    phases (s): " + ", ".join(f"{k} {v:.1f}" for k, v in report.seconds.items()))
+    print(f"    sweep motions (RMS, eps) {[round(m, 4) for m in report.motion]}; bound holds: "
+          f"{bool((np.linalg.norm(T - V, axis=1) <= eps).all())}; faces identical: "
+          f"{bool(np.array_equal(np.asarray(_ply_map.map_ply(out).faces()['corners']), F))}; "
+          f"peaks: client {client_peak / 2 ** 30:.2f} GiB, workers "
+          f"{sorted(round(p / 2 ** 30, 2) for p in peaks.values())} GiB (tasks' largest "
+          f"{report.peak_memory / 2 ** 30:.2f})")
 
 
 def main():
@@ -256,6 +272,7 @@ def main():
     parser.add_argument("--crossing", action="store_true")
     parser.add_argument("--case", type=Path)
     parser.add_argument("--worker-limit", default="5GiB")
+    parser.add_argument("--keep", type=Path)
     args = parser.parse_args()
     if not (args.build / "benchmark" / "fairing_call").exists():
         print(f"skipped: {args.build}/benchmark/fairing_call is not built")

@@ -11,8 +11,12 @@ requests leave every file as it was and nothing of the run behind.
 import functools
 import hashlib
 import os
+import resource
+import signal
 import subprocess
 import sys
+import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -246,6 +250,44 @@ def test_a_failed_write_leaves_the_earlier_output(client, scan, tmp_path, monkey
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
 
 
+def limit_file_size(size):
+    """Files of this process may grow to `size` bytes at most (the kernel refuses the write
+    beyond, as a full disk would); the limit before, to restore."""
+    before = resource.getrlimit(resource.RLIMIT_FSIZE)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (size, before[1]))
+    return before
+
+
+def test_a_file_system_that_refuses_writes_leaves_no_output(client, scan, tmp_path, monkeypatch):
+    # The workers cannot write the tiles' files, then the client cannot write the output: each
+    # time an error naming the file, the earlier output as it was, nothing of the run left.
+    import distributed
+    path, V, F, _, eps = scan
+    out = tmp_path / "out.ply"
+    out.write_bytes(b"an earlier output")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster, set_as_default=False) as limited:
+        limited.run(limit_file_size, 10000)
+        with pytest.raises(OSError, match=r"File too large: .*tiles"):
+            fair_tiled(path, out, eps, client=limited, tile_memory=budget(F, 4))
+    assert out.read_bytes() == b"an earlier output"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
+    write = cf.tiles._Run.write
+
+    def write_when_full(run, out_path):
+        before = limit_file_size(100000)  # the run's arrays are written, the output is larger
+        try:
+            write(run, out_path)
+        finally:
+            resource.setrlimit(resource.RLIMIT_FSIZE, before)
+    monkeypatch.setattr(cf.tiles._Run, "write", write_when_full)
+    with pytest.raises(OSError, match=r"File too large: .*out\.ply"):
+        fair_tiled(path, out, eps, client=client, tile_memory=budget(F, 4))
+    assert out.read_bytes() == b"an earlier output"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
+
+
 def test_rings_are_those_of_the_faces():
     V, F = icosphere(4)
     rings = _partition.Rings(F, len(V))
@@ -257,6 +299,35 @@ def test_rings_are_those_of_the_faces():
             # One ring more: every vertex of a face with a vertex reached.
             reached = reached.copy()
             reached[F[reached[F].any(axis=1)].ravel()] = True
+
+
+def test_kd_cells_are_of_equal_counts_from_a_sample(monkeypatch):
+    V, _ = icosphere(6)
+    monkeypatch.setattr(_partition, "BLOCK_ROWS", 5000)  # several blocks
+    for count, sample, spread in ((8, len(V), 3), (12, len(V), 4), (8, 4096, 0.15 * len(V) / 8)):
+        monkeypatch.setattr(_partition, "CUT_SAMPLE", sample)
+        tiles = _partition.kd_tiles(V, count)
+        counts = np.bincount(tiles.tile, minlength=tiles.count)
+        assert tiles.count == count and counts.max() - counts.min() <= spread
+        for t in range(tiles.count):
+            members = V[tiles.tile == t]
+            assert np.array_equal(tiles.boxes[t], [members.min(axis=0), members.max(axis=0)])
+    crossing = _partition.kd_tiles(V, 8, across=1)
+    assert not np.array_equal(crossing.tile, tiles.tile)
+
+
+def test_candidate_faces_are_those_with_a_corner_in_each_box(monkeypatch):
+    V, F = icosphere(4)
+    rng = np.random.default_rng(8)
+    centres, halves = rng.uniform(-1, 1, (20, 3)), rng.uniform(0.05, 0.8, (20, 3))
+    boxes = np.concatenate([np.stack([centres - halves, centres + halves], axis=1),
+                            [[[2, 2, 2], [3, 3, 3]], [[-1, -1, 0], [1, 1, 0]]]])
+    monkeypatch.setattr(_partition, "BLOCK_ROWS", 1000)  # blocks of several grid cells
+    found = _partition.candidate_faces(F, V, boxes)
+    for box, faces in zip(boxes, found):
+        inside = ((V[F] >= box[0]) & (V[F] <= box[1])).all(axis=2).any(axis=1)
+        assert np.array_equal(faces, np.flatnonzero(inside))
+    assert len(found[-2]) == 0 and 0 < len(found[-1]) < len(F)
 
 
 def tile_and_band(V, F, count, t):
@@ -327,4 +398,33 @@ def test_a_task_lost_after_its_write_is_run_again_with_the_same_result(scan, tmp
         monkeypatch.setattr(_sweeps, "fair_tile", lost_once)
         fair_tiled(path, tmp_path / "lost.ply", eps, client=in_process, tile_memory=budget(F, 8))
     assert marker.read_text() == "tile 0, sweep 2"
+    assert (tmp_path / "lost.ply").read_bytes() == (tmp_path / "kept.ply").read_bytes()
+
+
+def test_a_worker_killed_mid_sweep_leaves_the_result_unchanged(scan, tmp_path):
+    # A worker process killed while it runs a tile's descent: its nanny starts another, Dask
+    # runs the lost task again, and the output is the same bit for bit.
+    import distributed
+    path, V, F, _, eps = scan
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster, set_as_default=False) as client:
+        fair_tiled(path, tmp_path / "kept.ply", eps, client=client, tile_memory=budget(F, 8))
+        before = client.run(os.getpid)
+        killed = []
+
+        def kill_one_descent():
+            while not killed:
+                for worker, keys in client.processing().items():
+                    if any(str(key).startswith("fair_tile") for key in keys):
+                        os.kill(before[worker], signal.SIGKILL)
+                        killed.append(worker)
+                        return
+                time.sleep(0.01)
+        killer = threading.Thread(target=kill_one_descent, daemon=True)
+        killer.start()
+        fair_tiled(path, tmp_path / "lost.ply", eps, client=client, tile_memory=budget(F, 8))
+        killer.join(timeout=10)
+        after = client.run(os.getpid)
+    assert killed and before[killed[0]] not in after.values()
     assert (tmp_path / "lost.ply").read_bytes() == (tmp_path / "kept.ply").read_bytes()

@@ -121,8 +121,20 @@ def apply_tile(folder: Path, t: int, sweep: int) -> None:
 
 
 def _save(path: Path, **arrays) -> None:
-    # Written whole beside its place, then renamed: a reader never sees half a file.
+    # Written whole beside its place, then renamed: a reader never sees half a file. A write
+    # refused (a full disk) names the file, which numpy's writes into an open file do not.
     partial = path.with_name(path.name + f".partial-{os.getpid()}")
-    with open(partial, "wb") as f:
-        np.savez(f, **arrays)
+    try:
+        with open(partial, "wb") as f:
+            np.savez(f, **arrays)
+    except OSError as error:
+        partial.unlink(missing_ok=True)
+        raise named(error, path) from None
     os.replace(partial, path)
+
+
+def named(error: OSError, path: Path) -> OSError:
+    """`error` naming `path` when it names no file (a write into an open file refused)."""
+    if error.errno is None or error.filename is not None:
+        return error
+    return OSError(error.errno, error.strerror, str(path))
