@@ -1,7 +1,10 @@
-"""What the Python benchmarks print of the machine with every figure."""
+"""What the Python benchmarks share: the machine they print with every figure, and the median
+of timed runs."""
 
 import os
 import platform
+import statistics
+import time
 
 
 def cpu_model() -> str:
@@ -22,3 +25,13 @@ def cores() -> int:
         return len(os.sched_getaffinity(0))
     except AttributeError:
         return os.cpu_count() or 1
+
+
+def median_seconds(run, runs):
+    """The median wall time of `runs` calls of `run`, and the last call's result."""
+    times, result = [], None
+    for _ in range(runs):
+        start = time.perf_counter()
+        result = run()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), result

@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 
 import cgal_constrained_fairing as cf
-from benchmark_machine import cpu_model
+from benchmark_machine import cpu_model, median_seconds
 
 ROOT = Path(__file__).resolve().parents[1]
 TEMPLATES = Path("/usr/share/mricron/templates")
@@ -70,16 +70,6 @@ def ours_in_phases(labels, affine, runs):
         end = time.perf_counter()
         parts.append((end - start, marks[0] - start, marks[-1] - marks[0], end - marks[-1]))
     return [statistics.median(p[k] for p in parts) for k in range(4)], result
-
-
-def median_seconds(run, runs):
-    """The median wall time of `runs` calls of `run`, and the last call's result."""
-    times, result = [], None
-    for _ in range(runs):
-        start = time.perf_counter()
-        result = run()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times), result
 
 
 def load_vtk(threads):

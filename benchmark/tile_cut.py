@@ -18,16 +18,14 @@ are single-threaded numpy.
 
 import argparse
 import os
-import statistics
 import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
 
-from benchmark_machine import cpu_model
+from benchmark_machine import cpu_model, median_seconds
 from cgal_constrained_fairing.tiles import _partition, _ply_map
 
 
@@ -53,15 +51,6 @@ def every_box(corners, points, boxes):
     return [np.concatenate(f) for f in found]
 
 
-def timed(function, runs):
-    times, result = [], None
-    for _ in range(runs):
-        start = time.perf_counter()
-        result = function()
-        times.append(time.perf_counter() - start)
-    return result, statistics.median(times)
-
-
 def measure(build, level, counts, runs, folder):
     path = folder / f"noisy_{level}.ply"
     subprocess.run([str(build / "benchmark" / "fairing_call"), "--write-case", str(path),
@@ -74,16 +63,17 @@ def measure(build, level, counts, runs, folder):
     edge = np.linalg.norm(points[sample] - points[np.roll(sample, 1, axis=1)], axis=2).mean()
     print(f"level {level}: {len(points)} vertices, {len(corners)} triangles; medians of {runs} runs")
     for count in counts:
-        tiles, t_kd = timed(lambda: _partition.kd_tiles(points, count), runs)
-        exact, t_exact = timed(lambda: exact_kd_tiles(points, count), runs)
+        t_kd, tiles = median_seconds(lambda: _partition.kd_tiles(points, count), runs)
+        t_exact, exact = median_seconds(lambda: exact_kd_tiles(points, count), runs)
         sizes, exact_sizes = (np.bincount(t, minlength=count) for t in (tiles.tile, exact))
         print(f"  {count} tiles: k-d cut {t_kd:.2f} s, on all the points {t_exact:.2f} s "
               f"(ratio {t_exact / t_kd:.2f}); cells of {sizes.min()} to {sizes.max()} vertices "
               f"(all points' quantiles {exact_sizes.min()} to {exact_sizes.max()})")
         # fair_tiled's margin: 1.5 edge lengths for each of the 18 ghost rings and one more.
         boxes = np.array([_partition.grown(box, 28.5 * edge) for box in tiles.boxes])
-        found, t_grid = timed(lambda: _partition.candidate_faces(corners, points, boxes), runs)
-        direct, t_every = timed(lambda: every_box(corners, points, boxes), runs)
+        t_grid, found = median_seconds(
+            lambda: _partition.candidate_faces(corners, points, boxes), runs)
+        t_every, direct = median_seconds(lambda: every_box(corners, points, boxes), runs)
         per = 1e9 / (len(corners) * count)
         print(f"    candidate faces: bucketed {t_grid:.2f} s ({t_grid * per:.1f} ns per face "
               f"and tile), every box {t_every:.2f} s ({t_every * per:.1f} ns; ratio "

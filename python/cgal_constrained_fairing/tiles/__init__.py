@@ -357,8 +357,8 @@ class _Run:
         return tiles, [built[t] for t in range(tiles.count)]
 
     def _cut(self, count: int, margin: float) -> _partition.Tiles:
-        """The k-d cells of at least `count` tiles, and each one's candidate faces, in the
-        run's folder."""
+        """The k-d cells of `count` tiles, and each one's candidate faces, in the run's
+        folder."""
         tiles = _partition.kd_tiles(self.points, count)
         np.save(self.folder / "tile.npy", tiles.tile)
         np.save(self.folder / "boxes.npy", tiles.boxes)

@@ -1,9 +1,9 @@
 """Spatial tiles of a mesh: which vertices each tile owns, its rings of ghosts, its colour.
 
-A tile owns the vertices of one cell of a k-d split of the input points (cells of about equal
-counts). Its mesh is the triangles within ``rings`` rings of its owned vertices, found among the
-triangles with a corner in the cell's box grown by a margin, which one pass over the face array
-finds for all tiles at once. Its band is the part of that mesh that the sweeps after the first
+A tile owns the vertices of one cell of a k-d split of the input points (cells of equal counts,
+cut on a sample's quantiles). Its mesh is the triangles within ``rings`` rings of its owned
+vertices, found among the triangles with a corner in the cell's box grown by a margin, which one
+pass over the face array finds for all tiles at once (a block's corners bucketed by a grid). Its band is the part of that mesh that the sweeps after the first
 need: the owned vertices within `BAND_RINGS` rings of a ghost, which descend, and the triangles
 within ``rings`` rings of them. Two tiles get different colours when one's ghosts within
 `OVERLAP_RINGS` + `HINGE_RINGS` rings are owned by the other: the descents of tiles of one colour
@@ -34,14 +34,14 @@ BAND_RINGS = 16
 # start, where no tile has faired them yet, bent the owned vertices next to them, and the sweeps
 # after the first mended that kink slowly.
 OVERLAP_RINGS = 8
-# The points whose medians make the k-d cuts, at most: cells of equal counts of a sample hold
+# The points whose quantiles make the k-d cuts, at most: cells of equal counts of a sample hold
 # counts of all the points within about one over the square root of a cell's sample of each
 # other (0.3 % for 16 cells), and the client holds the sample, not copies of the cells' points.
 CUT_SAMPLE = 1 << 21
 # The cells per axis of the grid that buckets faces for the boxes that search them: a box of
-# a tile of T spans about 64^3 / T cells, and a corner is tested against the few boxes whose
-# cells hold it.
-GRID_CELLS = 64
+# a tile of T spans about 32^3 / T cells, and a corner is tested against the few boxes whose
+# cells hold it; 32^3 cells have keys of 15 bits, sorted by radix.
+GRID_CELLS = 32
 
 
 @dataclasses.dataclass
@@ -151,25 +151,27 @@ def candidate_faces(corners: np.ndarray, points: np.ndarray,
     size = np.maximum(high - low, np.finfo(float).tiny) / GRID_CELLS
 
     def cell(x):  # a point outside the grid in its nearest cell, which the test then refuses
-        return np.clip(((x - low) / size).astype(np.int64), 0, GRID_CELLS - 1)
-
-    def key(c):
-        return c[..., 0] + GRID_CELLS * (c[..., 1] + GRID_CELLS * c[..., 2])
-    overlapped = [key(np.stack(np.meshgrid(*[np.arange(a, b + 1) for a, b in
-                                             zip(cell(box[0]), cell(box[1]))],
-                                           indexing="ij"), axis=-1)).ravel() for box in boxes]
+        return np.clip(((x - low) / size).astype(np.int32), 0, GRID_CELLS - 1)
+    spans = [(cell(box[0]), cell(box[1])) for box in boxes]
     found: List[List[np.ndarray]] = [[] for _ in boxes]
     for begin in range(0, len(corners), BLOCK_ROWS):
         block = np.asarray(corners[begin:begin + BLOCK_ROWS], np.int64)
         p = points[block.ravel()]
-        keys = key(cell(p))
+        c = cell(p)
+        # Keys of 15 bits, which numpy sorts by radix.
+        keys = (c[:, 0] + GRID_CELLS * (c[:, 1] + GRID_CELLS * c[:, 2])).astype(np.int16)
         order = np.argsort(keys, kind="stable")
-        keys = keys[order]
+        # The cells the block's corners occupy, each a run of `order`.
+        first = np.flatnonzero(np.diff(keys[order], prepend=-1))
+        counts = np.diff(first, append=len(keys))
+        occupied = c[order[first]]
         p = p.reshape(-1, 3, 3)
-        for t, box in enumerate(boxes):
-            first = np.searchsorted(keys, overlapped[t])
-            counts = np.searchsorted(keys, overlapped[t], side="right") - first
-            faces = np.unique(order[concatenated_ranges(first, counts)] // 3)
+        for t, (lower, upper) in enumerate(spans):
+            runs = ((occupied >= lower) & (occupied <= upper)).all(axis=1)
+            near = np.zeros(len(block), bool)  # a mask, not a sort: a face holds 3 corners
+            near[order[concatenated_ranges(first[runs], counts[runs])] // 3] = True
+            faces = np.flatnonzero(near)
+            box = boxes[t]
             inside = ((p[faces] >= box[0]) & (p[faces] <= box[1])).all(axis=2).any(axis=1)
             found[t].append(begin + faces[inside])
     return [np.concatenate(f) if f else np.zeros(0, np.int64) for f in found]
