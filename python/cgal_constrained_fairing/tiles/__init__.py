@@ -433,9 +433,8 @@ class _Run:
                                _sweeps.open_array(self.folder / "deviation.npy"),
                                _sweeps.open_array(self.folder / "at_bound.npy"))
             os.replace(partial, out_path)
-        except OSError as error:  # a full disk: named, as numpy's writes into a file do not
+        except BaseException as error:
             partial.unlink(missing_ok=True)
-            raise _sweeps.named(error, out_path) from None
-        except BaseException:
-            partial.unlink(missing_ok=True)
+            if isinstance(error, OSError):  # a full disk, named: numpy's writes into a file are not
+                raise _sweeps.named(error, out_path) from None
             raise
