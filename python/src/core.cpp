@@ -164,6 +164,30 @@ py::tuple measure_mesh(const Float_array& vertices, const Index_array& faces, co
   return py::make_tuple(value, error.defect, error.message);
 }
 
+// The noise estimate's squared normalized height of each vertex of `which` (NaN where the
+// vertex cannot be used), so that a mesh in tiles gets the whole mesh's estimate from its tiles.
+py::tuple noise_heights(const Float_array& vertices, const Index_array& faces, const Index_array& which)
+{
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
+  py::array_t<double> heights(which.shape(0));
+  double* out = heights.mutable_data();
+  PMP::Constrained_fairing_input_error error;
+  {
+    py::gil_scoped_release release;
+    Mesh mesh;
+    error = build_mesh(vertices, faces, mesh);
+    CF::Noise_height_scratch<Mesh> scratch;
+    for(py::ssize_t k = 0; k < which.shape(0); ++k)
+    {
+      const std::int64_t i = which.data()[k];
+      out[k] = std::numeric_limits<double>::quiet_NaN();
+      if(!error && i >= 0 && std::size_t(i) < n)
+        CF::mesh_noise_height(vertex_descriptor(Mesh::size_type(i)), mesh, mesh.points(), scratch, out[k]);
+    }
+  }
+  return py::make_tuple(heights, error.defect, error.message);
+}
+
 // The iteration callback: the user's progress callback under the GIL, and Ctrl-C. Whatever
 // Python raised stops the run and is kept for the caller to raise once the GIL is back.
 class Python_callback
@@ -1064,6 +1088,11 @@ void bind_fairing(py::module_& m)
       return measure_mesh(vertices, faces, [](const Mesh& mesh) { return PMP::estimate_noise_level(mesh); });
     },
     py::arg("vertices"), py::arg("faces"));
+  m.def("noise_heights", &noise_heights, py::arg("vertices"), py::arg("faces"), py::arg("which"));
+  m.def(
+    "noise_radius",
+    [](std::vector<double> heights) { return CF::noise_radius(heights); },
+    py::arg("heights"));
   m.def(
     "estimate_noise_level_of_points",
     [](const Float_array& vertices, std::size_t neighbors) {

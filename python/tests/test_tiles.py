@@ -159,6 +159,25 @@ def test_other_formats_are_converted(client, scan, tmp_path):
     assert (np.linalg.norm(W - V, axis=1) <= eps).all()
 
 
+def test_relative_and_estimated_eps_come_from_the_tiles(client, scan, tmp_path, monkeypatch):
+    # "h" and "auto" are the whole mesh's, measured from the tiles' parts: the client never
+    # builds the whole mesh (its measures of the whole mesh are made to fail here).
+    path, V, F, _, _ = scan
+    whole = {"h": 0.25 * cf.mean_edge_length(V, F), "auto": cf.estimate_noise_level(V, F)}
+
+    def whole_mesh(*_):
+        raise AssertionError("the whole mesh measured in the client")
+    monkeypatch.setattr(_core, "mean_edge_length", whole_mesh)
+    monkeypatch.setattr(_core, "estimate_noise_level", whole_mesh)
+    for eps, kind in (("0.25h", "h"), ("auto", "auto")):
+        report = fair_tiled(path, tmp_path / "out.ply", eps, client=client,
+                            tile_memory=budget(F, 8))
+        assert len(report.colour) >= 8
+        assert report.epsilon == pytest.approx(whole[kind], rel=1e-12)
+        W, _ = cf.read_mesh(tmp_path / "out.ply")
+        assert (np.linalg.norm(W - V, axis=1) <= report.epsilon).all()
+
+
 def test_refusals_leave_files_as_they_were(client, scan, tmp_path):
     path, V, F, _, eps = scan
     before = digest(path)
@@ -211,6 +230,23 @@ def test_command_line(scan, tmp_path, capsys):
     assert main([str(path), str(tmp_path / "out.off")]) == 1
     assert "writes PLY" in capsys.readouterr().out
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.ply"]
+
+
+def test_a_scheduler_that_cannot_be_reached_is_a_clear_error(scan, tmp_path, capsys):
+    import dask
+    import socket
+    from cgal_constrained_fairing.tiles._command_line import main
+    path, _, _, _, _ = scan
+    with socket.socket() as s:  # a port nothing listens on
+        s.bind(("127.0.0.1", 0))
+        address = f"tcp://127.0.0.1:{s.getsockname()[1]}"
+    (tmp_path / "out.ply").write_bytes(b"an earlier output")
+    with dask.config.set({"distributed.comm.timeouts.connect": "2s"}):
+        assert main([str(path), str(tmp_path / "out.ply"), "--scheduler", address]) == 1
+    said = capsys.readouterr().out
+    assert said.startswith("error: ") and address in said and "nothing written" in said
+    assert [p.name for p in tmp_path.iterdir()] == ["out.ply"]
+    assert (tmp_path / "out.ply").read_bytes() == b"an earlier output"
 
 
 @pytest.mark.filterwarnings("default")

@@ -4,18 +4,12 @@
 #ifndef CGAL_PMP_ESTIMATE_NOISE_LEVEL_H
 #define CGAL_PMP_ESTIMATE_NOISE_LEVEL_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Mesh_noise_height.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Noise_heights.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/number_utils.h>
 
-#include <Eigen/Dense>
-
-#include <algorithm>
-#include <cmath>
-#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -70,53 +64,15 @@ double estimate_noise_level(const TriangleMesh& tmesh, const NamedParameters& np
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-
   const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tmesh));
-  const auto position = [&](vertex_descriptor v) {
-    const auto& p = get(vpm, v);
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  };
-
   std::vector<double> heights; // squared, divided by their variance factor
-  std::vector<vertex_descriptor> ring;
-  std::vector<Eigen::Vector3d> points;
-  for(vertex_descriptor v : vertices(tmesh))
+  internal::Constrained_fairing::Noise_height_scratch<TriangleMesh> scratch;
+  for(auto v : vertices(tmesh))
   {
-    if(halfedge(v, tmesh) == boost::graph_traits<TriangleMesh>::null_halfedge())
-      continue;
-    const Eigen::Vector3d p = position(v);
-    // The normal: the sum of the doubled area vectors of the faces around v.
-    Eigen::Vector3d n = Eigen::Vector3d::Zero();
-    for(face_descriptor f : faces_around_target(halfedge(v, tmesh), tmesh))
-    {
-      if(f == boost::graph_traits<TriangleMesh>::null_face())
-        continue;
-      const auto h = halfedge(f, tmesh);
-      const Eigen::Vector3d a = position(source(h, tmesh)), b = position(target(h, tmesh)),
-                            c = position(target(next(h, tmesh), tmesh));
-      n += (b - a).cross(c - a);
-    }
-    if(!(n.norm() > 0))
-      continue;
-    ring.clear();
-    for(vertex_descriptor w : vertices_around_target(halfedge(v, tmesh), tmesh))
-      ring.push_back(w);
-    const std::size_t first_ring = ring.size();
-    for(std::size_t k = 0; k < first_ring; ++k)
-      for(vertex_descriptor w : vertices_around_target(halfedge(ring[k], tmesh), tmesh))
-        if(w != v && std::find(ring.begin(), ring.end(), w) == ring.end())
-          ring.push_back(w);
-    if(ring.size() < internal::Constrained_fairing::noise_fit_points)
-      continue;
-    points.clear();
-    for(vertex_descriptor w : ring)
-      points.push_back(position(w));
-    double residual = 0, factor = 1;
-    if(internal::Constrained_fairing::cubic_residual(p, n.normalized(), points, residual, factor))
-      heights.push_back(residual * residual / factor);
+    double height = 0;
+    if(internal::Constrained_fairing::mesh_noise_height(v, tmesh, vpm, scratch, height))
+      heights.push_back(height);
   }
   return internal::Constrained_fairing::noise_radius(heights);
 }

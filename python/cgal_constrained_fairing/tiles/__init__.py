@@ -40,7 +40,7 @@ import numpy as np
 from .. import _core
 from .._fairing import call_options
 from .._io import read_mesh
-from ..batch._epsilon import mesh_epsilon, parse_eps
+from ..batch._epsilon import parse_eps
 from . import _partition, _ply_map, _sweeps
 from ._command_line import main
 
@@ -92,6 +92,8 @@ class TiledReport:
     converged : bool
         Whether the last sweep moved the seams' vertices by at most `MOTION_TOLERANCE` (0.5 %)
         of epsilon (root mean square).
+    epsilon : float
+        The bound, as given or as measured from the tiles (``"0.25h"``, ``"auto"``).
     max_deviation : float
         The largest distance of an output vertex to its input position.
     tile_sizes : numpy.ndarray
@@ -111,6 +113,7 @@ class TiledReport:
     largest_motion: List[float]
     iterations: List[int]
     converged: bool
+    epsilon: float
     max_deviation: float
     tile_sizes: np.ndarray
     peak_memory: int
@@ -119,7 +122,8 @@ class TiledReport:
     def __repr__(self):
         return (f"TiledReport({len(self.colour)} tiles in {self.colour.max() + 1} colours, "
                 f"{self.sweeps} sweeps, last motion {self.motion[-1] if self.motion else 0:.3g} "
-                f"eps, converged={self.converged}, max_deviation={self.max_deviation:.6g})")
+                f"eps, converged={self.converged}, epsilon={self.epsilon:.6g}, "
+                f"max_deviation={self.max_deviation:.6g})")
 
 
 def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | str",
@@ -138,7 +142,9 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
         a complete output.
     epsilon : float or str
         The largest distance a vertex may move, as in `fair`, or as the command-line tool's
-        ``--eps`` reads it (``"0.25h"``, a fraction of the mean edge length, or ``"auto"``).
+        ``--eps`` reads it (``"0.25h"``, a fraction of the mean edge length, or ``"auto"``):
+        measured from the tiles, as the whole mesh's up to rounding, the noise estimate with
+        the client holding one number per vertex.
     client : distributed.Client, optional
         The cluster to run on. Default: a `distributed.LocalCluster` of one single-threaded
         process per core, for the run only.
@@ -265,6 +271,20 @@ def _fitting_count(count: int, faces: int, largest: int, most: float) -> Optiona
     return max(count + 1, math.ceil(faces / fitting))
 
 
+def _tiles_epsilon(eps, built: List[Dict[str, Any]]) -> float:
+    """The epsilon of an ``"h"`` or ``"auto"`` `eps` from the tiles' parts: the mean edge
+    length from their owned edges, the noise estimate from the median of their owned vertices'
+    heights; the whole mesh's, up to the rounding of sums in another order."""
+    kind, value = eps
+    if kind == "h":
+        return value * sum(b["edge_length"] for b in built) / max(1, sum(b["edges"] for b in built))
+    heights = np.concatenate([b.pop("noise_heights") for b in built])
+    noise = _core.noise_radius(heights[~np.isnan(heights)])
+    if not noise > 0:
+        raise ValueError("cannot estimate the noise level of so small a mesh; give eps")
+    return noise
+
+
 class _Run:
     """One run's folder, mesh, tiles and sweeps."""
 
@@ -279,7 +299,7 @@ class _Run:
         self.mesh = _ply_map.map_ply(in_path)
         _ply_map.check_triangles(self.mesh)
         self._write_arrays()
-        self.epsilon = mesh_epsilon(eps, self.points, self.faces)
+        self.eps, self.epsilon = eps, eps[1] if eps[0] == "value" else None
 
     def _write_arrays(self) -> None:
         n = self.mesh.vertex.count
@@ -303,6 +323,7 @@ class _Run:
         clock = time.perf_counter()
         tiles, built = self._tiles(budget)
         self.seconds["tiles"] = time.perf_counter() - clock
+        self.epsilon = self.epsilon or _tiles_epsilon(self.eps, built)
         adjacent = _partition.adjacency([b["near"] for b in built])
         colour = _partition.colour_tiles(adjacent)
         sizes = np.array([[b["vertices"], b["faces"]] for b in built])
@@ -323,7 +344,7 @@ class _Run:
                 break
         deviation = _sweeps.open_array(self.folder / "deviation.npy")
         return TiledReport(tiles.tile, colour, len(motion), motion, largest, iterations,
-                           motion[-1] <= MOTION_TOLERANCE or colour.max() == 0,
+                           motion[-1] <= MOTION_TOLERANCE or colour.max() == 0, self.epsilon,
                            float(deviation.max(initial=0.0)), sizes, peak)
 
     def _tiles(self, budget: int):
@@ -373,7 +394,8 @@ class _Run:
         built = dict(built or {})
         wanted = [int(t) for t in tiles if int(t) not in built]
         done = self.client.gather([self.client.submit(_sweeps.build_tile, str(self.folder), t, rings,
-                                                      margin, pure=False) for t in wanted])
+                                                      margin, self.eps[0] == "auto", pure=False)
+                                   for t in wanted])
         built.update({b["tile"]: b for b in done})
         return built
 
@@ -409,7 +431,7 @@ class _Run:
         """A setting of the run's calls: the user's, or the library's default."""
         if name in self.keywords:
             return int(self.keywords[name])
-        method = call_options(self.epsilon, **self.keywords).method
+        method = call_options(1.0, **self.keywords).method  # whatever the epsilon
         return int(_core.default_settings(method)[name])
 
     def _smoothing_steps(self) -> int:

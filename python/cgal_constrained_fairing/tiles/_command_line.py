@@ -28,7 +28,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     try:
         if args.scheduler:
             import distributed
-            client = distributed.Client(args.scheduler, timeout="30s")
+            # Dask's connect timeout (distributed.comm.timeouts.connect, 30 s unless set).
+            client = distributed.Client(args.scheduler)
         report = fair_tiled(args.input, args.output, args.eps, client=client,
                             tile_memory=args.tile_memory, work_dir=args.work_dir)
     except (InputError, ValueError, OSError) as error:

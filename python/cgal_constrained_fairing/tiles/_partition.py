@@ -13,7 +13,7 @@ at once.
 
 import dataclasses
 import math
-from typing import List, Set
+from typing import List, Set, Tuple
 
 import numpy as np
 
@@ -237,6 +237,19 @@ def tile_mesh(t: int, tiles: Tiles, corners, points, rings: int, box, faces) -> 
     overlap = around.within(owned[used], OVERLAP_RINGS)
     return Tile_mesh(vertices[used], faces[kept], local_faces, owned[used], seam, overlap,
                      near_owners[near_owners != t], around)
+
+
+def owned_edge_lengths(mesh: Tile_mesh, X: np.ndarray) -> Tuple[float, int]:
+    """The sum and the number of the lengths, at the points `X` of the tile's vertices, of its
+    edges whose endpoint of smaller global id it owns: over all tiles, every edge of the mesh
+    once, as the mean edge length counts them (a ghost ring holds an owned vertex's edges)."""
+    a, b = mesh.local_faces.ravel(), np.roll(mesh.local_faces, -1, axis=1).ravel()
+    owner = np.where(mesh.vertices[a] < mesh.vertices[b], a, b)
+    kept = mesh.owned[owner]
+    a, b = a[kept], b[kept]
+    edges = np.unique(np.minimum(a, b).astype(np.int64) * len(X) + np.maximum(a, b))
+    a, b = edges // len(X), edges % len(X)
+    return float(np.linalg.norm(X[a] - X[b], axis=1).sum()), len(edges)
 
 
 def band_mesh(mesh: Tile_mesh, rings: int) -> Band_mesh:

@@ -14,6 +14,7 @@ from typing import Any, Dict
 import numpy as np
 
 from .. import _core
+from .._errors import InputError
 from .._fairing import call_options, result_of, set_max_threads
 from . import _partition
 
@@ -33,10 +34,12 @@ def open_array_new(path: Path, shape, dtype) -> np.ndarray:
     return np.lib.format.open_memmap(path, mode="w+", dtype=dtype, shape=shape)
 
 
-def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]:
+def build_tile(folder: str, t: int, rings: int, margin: float, noise: bool) -> Dict[str, Any]:
     """Tile `t`'s mesh into the run's folder, from the faces found in its box grown by `margin`
     (the tile's candidates file), searched again with a doubled margin where the rings reach
-    farther; its ghosts' owners near enough to share a hinge."""
+    farther; its ghosts' owners near enough to share a hinge; its owned edges' lengths and, if
+    `noise`, its owned vertices' noise heights, the tiles' parts of the whole mesh's "h" and
+    "auto" epsilons."""
     root = Path(folder)
     points = open_array(root / "input.npy")
     corners = open_array(root / "faces.npy")
@@ -56,9 +59,18 @@ def build_tile(folder: str, t: int, rings: int, margin: float) -> Dict[str, Any]
           owned=mesh.owned, seam=mesh.seam, overlap=mesh.overlap)
     _save(root / "tiles" / f"{t}.band.npz", vertices=mesh.vertices[band.vertices],
           faces=band.local_faces, owned=band.free, seam=band.seam)
+    X = np.ascontiguousarray(points[mesh.vertices])
+    length, edges = _partition.owned_edge_lengths(mesh, X)
+    heights = None
+    if noise:
+        heights, defect, message = _core.noise_heights(X, mesh.local_faces.astype(np.int64),
+                                                       np.flatnonzero(mesh.owned))
+        if defect.name != "NONE":
+            raise InputError(defect.name, message)
     return {"tile": t, "near": mesh.near_owners, "vertices": len(mesh.vertices),
             "faces": len(mesh.local_faces), "owned": int(mesh.owned.sum()),
-            "band_faces": len(band.local_faces), "peak_memory": peak_memory()}
+            "band_faces": len(band.local_faces), "edge_length": length, "edges": edges,
+            "noise_heights": heights, "peak_memory": peak_memory()}
 
 
 def fair_tile(folder: str, t: int, sweep: int, epsilon: float, keywords: Dict[str, Any],
