@@ -42,6 +42,7 @@ from .._fairing import call_options
 from .._io import read_mesh
 from ..batch._epsilon import parse_eps
 from . import _partition, _ply_map, _sweeps
+from ._streamed_conversion import NotStreamed, convert_streamed
 from ._command_line import main
 
 __all__ = ["TiledReport", "fair_tiled", "main"]
@@ -65,6 +66,14 @@ MAX_SWEEPS = 20
 # in-core result (0.076 and 0.075 epsilon RMS on the noisy camel in 6 tiles) and the same
 # sweeps, and 40 the same seam motions at 4.8 M triangles for 3.6 times the time.
 SEAM_ITERATIONS = 10
+# The least tiles per task slot of the cluster once a mesh needs more than one tile: a tile of
+# the first sweep waits for its neighbours of the colours before its own (4 or 5 colours), so
+# with few tiles a slot idles. At 4.8 M triangles on 2 slots, 7, 8, 9, 10, 12, 16 and 24 tiles
+# took 159, 112, 120, 117, 132, 149 and 153 s (in core 94 s on both cores; 117, 80, 85, 82, 85,
+# 101 and 94 s in the first sweep), so 4 a slot; but no tile of fewer triangles than
+# SMALLEST_TILE, where the ghosts add about 30 % to the vertices (15 % at 8 tiles there).
+TILES_PER_SLOT = 4
+SMALLEST_TILE = 200_000
 # How long a run waits for a worker when the client's scheduler has none.
 WORKER_WAIT_SECONDS = 60
 
@@ -135,7 +144,9 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
     Parameters
     ----------
     in_path : path-like
-        A triangle mesh file (binary PLY read in place; OFF, OBJ, STL and ASCII PLY converted).
+        A triangle mesh file: binary PLY is read in place; OFF and OBJ files of triangles are
+        converted a block of lines at a time, other files (polygons, STL, ASCII PLY) read whole
+        and converted.
     out_path : path-like
         The output, a ``.ply`` file; written beside its place and renamed when complete, so
         that an existing file of that name (never the input, nor a folder) is replaced only by
@@ -294,7 +305,10 @@ class _Run:
         self.client, self.threads = client, threads
         if not _ply_map.is_binary_ply(in_path):
             converted = folder / "input.ply"
-            _ply_map.convert_to_ply(read_mesh, in_path, converted)
+            try:
+                convert_streamed(in_path, converted)
+            except NotStreamed:  # properties, polygons, STL's soups: the file read whole
+                _ply_map.convert_to_ply(read_mesh, in_path, converted)
             in_path = converted
         self.mesh = _ply_map.map_ply(in_path)
         _ply_map.check_triangles(self.mesh)
@@ -354,11 +368,17 @@ class _Run:
         proportion to its border, about sqrt(f)). Each cut is judged first on one tile, the
         cell of most vertices, so that a cut too coarse costs one tile's mesh, not all."""
         rings = _sweeps.ghost_rings(self._smoothing_steps())
-        # Rings reach about an edge length each, farther across long edges: half as much again,
-        # and build_tile doubles it where they reach farther still.
-        margin = 1.5 * (rings + 1) * self._edge_scale()
+        # Rings reach about an edge length each, farther across long edges: 3 times as far, and
+        # build_tile doubles it where they reach farther still, searching every face again. At
+        # 1.5 and 2 times, every tile and half the tiles were searched again on the bunny of
+        # 4.8 M triangles in 8 tiles and the elephant of 5.7 M in 10; at 3, none (the candidates
+        # 15 to 30 % more), the tiles built in 1.1 to 1.3 s instead of 2.8 to 3.3.
+        margin = 3 * (rings + 1) * self._edge_scale()
         most = budget / BYTES_PER_TRIANGLE
         count = max(1, math.ceil(len(self.faces) / most))
+        if count > 1:
+            slots = sum(self.client.nthreads().values())
+            count = max(count, min(TILES_PER_SLOT * slots, len(self.faces) // SMALLEST_TILE))
         for attempt in range(3):
             tiles = self._cut(count, margin)
             probe = int(np.argmax(np.bincount(tiles.tile, minlength=tiles.count)))
