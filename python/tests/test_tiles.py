@@ -159,6 +159,21 @@ def test_other_formats_are_converted(client, scan, tmp_path):
     assert (np.linalg.norm(W - V, axis=1) <= eps).all()
 
 
+def test_enough_tiles_for_the_workers(client, scan, tmp_path, monkeypatch):
+    # Two tiles by memory, on 2 single-threaded workers: at least 4 a thread, unless tiles of
+    # SMALLEST_TILE triangles would be fewer; a mesh that fits one tile stays one, in core.
+    import cgal_constrained_fairing.tiles as tiles
+    path, V, F, _, eps = scan
+    monkeypatch.setattr(tiles, "SMALLEST_TILE", 1000)
+    report = fair_tiled(path, tmp_path / "out.ply", eps, client=client, tile_memory=budget(F, 2))
+    assert len(report.colour) >= tiles.TILES_PER_SLOT * 2
+    monkeypatch.setattr(tiles, "SMALLEST_TILE", len(F) // 3)
+    report = fair_tiled(path, tmp_path / "out.ply", eps, client=client, tile_memory=budget(F, 2))
+    assert len(report.colour) < tiles.TILES_PER_SLOT * 2
+    report = fair_tiled(path, tmp_path / "out.ply", eps, client=client, tile_memory="1GiB")
+    assert len(report.colour) == 1
+
+
 def test_relative_and_estimated_eps_come_from_the_tiles(client, scan, tmp_path, monkeypatch):
     # "h" and "auto" are the whole mesh's, measured from the tiles' parts: the client never
     # builds the whole mesh (its measures of the whole mesh are made to fail here).

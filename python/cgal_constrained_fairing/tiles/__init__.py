@@ -161,7 +161,9 @@ def fair_tiled(in_path: "os.PathLike[str] | str", out_path: "os.PathLike[str] | 
         process per core, for the run only.
     tile_memory : str or int
         What a tile's task may hold (``"2GiB"``, ``"500MB"`` or bytes): the tiles are made
-        small enough, at about 600 bytes per triangle.
+        small enough, at about 600 bytes per triangle; once the mesh needs more than one, at
+        least 4 per thread of the cluster's workers (none under 200,000 triangles), so that
+        no worker waits for the colours before its tile's.
     work_dir : path-like, optional
         Where the run keeps its arrays; a new folder in it is removed at the end. Default: the
         output's folder.
