@@ -1,8 +1,8 @@
 """OFF and OBJ meshes converted to binary PLY a block of lines at a time, for fair_tiled.
 
 The converted file holds the whole-file reader's vertices and faces bit for bit, across blocks
-of a few lines; what only the whole-file reader takes is refused with nothing left behind; the
-conversion's memory is a block's, not the mesh's.
+of a few lines; what only the whole-file reader takes is refused with nothing left behind; a
+file already there is neither replaced nor removed; the memory is a block's, not the mesh's.
 """
 
 import tracemalloc
@@ -27,9 +27,13 @@ def mesh():
     return noisy(V, F, 0.25), F
 
 
-def converted(path, tmp_path):
-    out = tmp_path / "converted.ply"
+def converted(path, tmp_path, name="converted.ply"):
+    out = tmp_path / name
     convert_streamed(path, out)
+    return mapped_mesh(out)
+
+
+def mapped_mesh(out):
     mapped = _ply_map.map_ply(out)
     records = mapped.vertices()
     V = np.stack([records[name] for name in "xyz"], axis=1)
@@ -112,4 +116,18 @@ def test_memory_is_a_blocks(monkeypatch, tmp_path, suffix):
     finally:
         tracemalloc.stop()
     assert peak < (V.nbytes + F.nbytes) / 4
-    assert np.array_equal(converted(path, tmp_path)[0], V)
+    W, G = mapped_mesh(tmp_path / "converted.ply")
+    assert np.array_equal(W, V) and np.array_equal(G, F)
+
+
+@pytest.mark.parametrize("taken", ["converted.ply", "converted.ply.vertices",
+                                   "converted.ply.faces"])
+def test_a_file_there_is_neither_replaced_nor_removed(tmp_path, taken):
+    V, F = mesh()
+    path = tmp_path / "scan.off"
+    cf.write_mesh(path, V, F)
+    (tmp_path / taken).write_bytes(b"a user's file")
+    with pytest.raises(FileExistsError):
+        convert_streamed(path, tmp_path / "converted.ply")
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(["scan.off", taken])
+    assert (tmp_path / taken).read_bytes() == b"a user's file"

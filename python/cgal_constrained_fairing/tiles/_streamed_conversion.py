@@ -24,22 +24,33 @@ class NotStreamed(Exception):
 
 
 def convert_streamed(in_path: Path, out_path: Path) -> None:
-    """`in_path` (``.off`` or ``.obj``) as a binary PLY mesh at `out_path`, positions in
-    double; NotStreamed if it holds more than plain vertices and triangles."""
+    """`in_path` (``.off`` or ``.obj``) as a binary PLY mesh at `out_path`, a new file, positions
+    in double; NotStreamed if it holds more than plain vertices and triangles. The files it
+    makes are new (an existing one is an error, never replaced), and it removes only those."""
     suffix = in_path.suffix.lower()
     if suffix not in (".off", ".obj"):
         raise NotStreamed(suffix)
     vertices_path = out_path.with_name(out_path.name + ".vertices")
     faces_path = out_path.with_name(out_path.name + ".faces")
+    made = []
     try:
-        with open(in_path, "rb") as text, open(vertices_path, "wb") as vertices, \
-                open(faces_path, "wb") as faces:
+        with open(in_path, "rb") as text, _new(vertices_path, made) as vertices, \
+                _new(faces_path, made) as faces:
             parse = _parse_off if suffix == ".off" else _parse_obj
             counts = parse(text, vertices, faces)
-        _assemble(out_path, counts, vertices_path, faces_path)
+        with _new(out_path, made) as out:
+            _assemble(out, counts, vertices_path, faces_path)
+        made.remove(out_path)
     finally:
-        vertices_path.unlink(missing_ok=True)
-        faces_path.unlink(missing_ok=True)
+        for path in made:
+            path.unlink()
+
+
+def _new(path: Path, made: List[Path]) -> BinaryIO:
+    """`path` created for writing (FileExistsError if it exists), noted in `made`."""
+    f = open(path, "xb")
+    made.append(path)
+    return f
 
 
 def _blocks(text: BinaryIO) -> Iterator[List[bytes]]:
@@ -177,14 +188,13 @@ def _write_faces(faces: BinaryIO, corners: np.ndarray, n: int) -> None:
     faces.write(_face_records(corners).tobytes())
 
 
-def _assemble(out_path: Path, counts, vertices_path: Path, faces_path: Path) -> None:
+def _assemble(out: BinaryIO, counts, vertices_path: Path, faces_path: Path) -> None:
     header = (b"ply\nformat binary_little_endian 1.0\n"
               + f"element vertex {counts[0]}\n".encode()
               + b"property double x\nproperty double y\nproperty double z\n"
               + f"element face {counts[1]}\n".encode()
               + b"property list uchar int vertex_indices\nend_header\n")
-    with open(out_path, "wb") as out:
-        out.write(header)
-        for part in (vertices_path, faces_path):
-            with open(part, "rb") as source:
-                shutil.copyfileobj(source, out, BLOCK_LINES * LINE_BYTES)
+    out.write(header)
+    for part in (vertices_path, faces_path):
+        with open(part, "rb") as source:
+            shutil.copyfileobj(source, out, BLOCK_LINES * LINE_BYTES)
