@@ -416,7 +416,7 @@ class _Run:
         built = dict(built or {})
         wanted = [int(t) for t in tiles if int(t) not in built]
         done = self.client.gather([self.client.submit(_sweeps.build_tile, str(self.folder), t, rings,
-                                                      margin, self.eps[0] == "auto", pure=False)
+                                                      margin, self.eps[0], pure=False)
                                    for t in wanted])
         built.update({b["tile"]: b for b in done})
         return built

@@ -34,12 +34,12 @@ def open_array_new(path: Path, shape, dtype) -> np.ndarray:
     return np.lib.format.open_memmap(path, mode="w+", dtype=dtype, shape=shape)
 
 
-def build_tile(folder: str, t: int, rings: int, margin: float, noise: bool) -> Dict[str, Any]:
+def build_tile(folder: str, t: int, rings: int, margin: float, measure: str) -> Dict[str, Any]:
     """Tile `t`'s mesh into the run's folder, from the faces found in its box grown by `margin`
     (the tile's candidates file), searched again with a doubled margin where the rings reach
-    farther; its ghosts' owners near enough to share a hinge; its owned edges' lengths and, if
-    `noise`, its owned vertices' noise heights, the tiles' parts of the whole mesh's "h" and
-    "auto" epsilons."""
+    farther; its ghosts' owners near enough to share a hinge; and the tile's part of the whole
+    mesh's epsilon where `measure` (the kind of the run's eps) asks for one: its owned edges'
+    lengths for "h", its owned vertices' noise heights for "auto"."""
     root = Path(folder)
     points = open_array(root / "input.npy")
     corners = open_array(root / "faces.npy")
@@ -60,9 +60,9 @@ def build_tile(folder: str, t: int, rings: int, margin: float, noise: bool) -> D
     _save(root / "tiles" / f"{t}.band.npz", vertices=mesh.vertices[band.vertices],
           faces=band.local_faces, owned=band.free, seam=band.seam)
     X = np.ascontiguousarray(points[mesh.vertices])
-    length, edges = _partition.owned_edge_lengths(mesh, X)
+    length, edges = _partition.owned_edge_lengths(mesh, X) if measure == "h" else (0.0, 0)
     heights = None
-    if noise:
+    if measure == "auto":
         heights, defect, message = _core.noise_heights(X, mesh.local_faces.astype(np.int64),
                                                        np.flatnonzero(mesh.owned))
         if defect.name != "NONE":
