@@ -5,10 +5,12 @@
 // parts, and what the detection marks on organic meshes.
 //
 //   fairing_features [--demo DIR] [--angle DEG] [--faces N] [--runs N] [--threads K]
-//                    [--parts NAME,NAME...] [--seed S] [--write DIR]
+//                    [--parts NAME,NAME...] [--seed S] [--write DIR] [--detection 1]
 //
-// CAD parts (fandisk, joint, blade, part, dragknob, anchor, cube-meshed from CGAL's
-// demo data in DIR: see get_demo_meshes.sh; skipped cleanly without them): each is a coarse
+// CAD parts: fandisk, joint, blade, part, dragknob, anchor, cube-meshed, pinion, rotor, turbine,
+// spool, couplingdown and mech-holes-shark from CGAL's demo data in DIR (see get_demo_meshes.sh;
+// skipped cleanly without them), and chamfered-block, gear, stepped-shaft and pyramid-boss, made
+// here (made_parts.h) since their edges are mostly 40 to 60 degrees. Each is a coarse
 // tessellation, so it is first remeshed with CGAL's isotropic_remeshing to about N faces
 // (default 20000), its edges sharper than the angle kept as constraints; that mesh is the clean
 // truth, and its edges whose dihedral angle is over the angle (default 30 degrees) are its sharp
@@ -16,18 +18,20 @@
 // and epsilon the noise radius. Measured against the clean mesh (surface_quality.h): the RMS
 // distance to the clean surface, the mean normal error over all faces and over the faces within
 // 2 h of a sharp edge, the smallest angle, the folded faces, the bound, the time (median of N
-// runs), and the detection: the share of the sharp edges found and of the found edges that are
-// not sharp. Methods: the default call, the accurate objective, the call with
-// `feature_angle(DEG)`, and the call given the clean sharp edges (`edge_is_constrained_map`:
-// what a perfect detection would give).
+// runs), and the detection: the share of the clean edges sharper than 40 degrees that are found,
+// and of the found edges that are not clean edges sharper than 20 degrees (false). Methods: the
+// default call, the accurate objective, the call with `feature_angle(DEG)`, and the call given
+// the clean sharp edges (`edge_is_constrained_map`: what a perfect detection would give).
 // --parts runs only the parts named; --seed draws other noise (default 1); --write writes each
 // case's meshes into DIR, as OFF files with the clean mesh's connectivity (NAME_clean.off,
 // NAME_D_noisy.off, NAME_D_default.off, NAME_D_features.off) and the edges feature_angle found
 // (NAME_D_creases.txt, a pair of vertex indices per line), from which doc/make_figures.py draws the
 // manual's figure.
+// --detection 1 measures the detection alone (the feature_angle call stopped after one iteration).
 // Organic meshes (the bundled bunny and elephant, 0.25 h of noise): the share of edges the
 // detection marks, and the bending energy over all hinges against the default call's.
 
+#include "made_parts.h"
 #include "surface_quality.h"
 
 #include <CGAL/Polygon_mesh_processing/constrained_fairing.h>
@@ -41,6 +45,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -75,6 +80,20 @@ Edge_flags sharp_edges(Mesh& mesh, double angle, const std::string& name)
   for(auto e : edges(mesh))
     sharp[e] = sharp[e] && !is_border(e, mesh);
   return sharp;
+}
+
+// Each edge's dihedral angle in degrees on `mesh`, by edge index (0 on the border).
+std::vector<double> dihedral_angles(const Mesh& mesh)
+{
+  std::vector<double> angle(num_edges(mesh), 0.);
+  for(auto e : edges(mesh))
+    if(!is_border(e, mesh))
+    {
+      const auto h = halfedge(e, mesh);
+      angle[e.idx()] = angle_deg(PMP::compute_face_normal(face(h, mesh), mesh),
+                                 PMP::compute_face_normal(face(opposite(h, mesh), mesh), mesh));
+    }
+  return angle;
 }
 
 double segment_distance(const Point& p, const Point& a, const Point& b)
@@ -123,7 +142,7 @@ double normal_error_near(const Mesh& result, const Clean_surface& clean, const s
 struct Row
 {
   Quality q;
-  double near_error = 0, seconds = 0, found = 0, false_share = 0;
+  double near_error = 0, seconds = 0, found = -1, false_share = 0; // found: -1 where not measured
   std::size_t marked = 0, iterations = 0, evaluations = 0;
 };
 
@@ -139,10 +158,28 @@ void write(const std::string& path, const Mesh& mesh)
   }
 }
 
+// The detection's shares: of the clean edges sharper than 40 degrees, those marked (found); of
+// the marked edges, those that are no clean edge sharper than 20 degrees (false).
+void measure_detection(const Mesh& mesh, const Edge_flags& marks, const std::vector<double>& clean_angle, Row& row)
+{
+  std::size_t sharp = 0, found = 0, wrong = 0, marked = 0;
+  for(auto e : edges(mesh))
+  {
+    const double a = clean_angle[e.idx()];
+    sharp += a > 40;
+    found += a > 40 && marks[e];
+    wrong += marks[e] && !(a > 20);
+    marked += marks[e];
+  }
+  row.found = sharp > 0 ? double(found) / double(sharp) : 1;
+  row.false_share = marked > 0 ? double(wrong) / double(marked) : 0;
+}
+
 // One method on `noisy`: the result measured against the clean mesh, and written to
 // `prefix`.off (with the creases found, for feature_angle) unless `prefix` is empty.
 Row run(Method method, const Mesh& noisy, const Clean_surface& clean, Edge_flags clean_sharp,
-        const std::vector<bool>& near, double eps, double angle, int runs, const std::string& prefix)
+        const std::vector<double>& clean_angle, const std::vector<bool>& near, double eps, double angle, int runs,
+        const std::string& prefix)
 {
   Row row;
   Mesh result;
@@ -186,17 +223,26 @@ Row run(Method method, const Mesh& noisy, const Clean_surface& clean, Edge_flags
   row.iterations = r.number_of_iterations;
   row.evaluations = r.number_of_energy_evaluations;
   if(method == FEATURES)
+    measure_detection(result, marks, clean_angle, row);
+  return row;
+}
+
+// The detection alone: the call with `feature_angle` stopped after one iteration, its marks
+// measured (`--detection 1`: every part and noise level in seconds, to compare detections).
+Row detection(const Mesh& noisy, const std::vector<double>& clean_angle, double eps, double angle)
+{
+  Row row;
+  Mesh result = noisy;
+  Edge_flags marks = result.add_property_map<Mesh::Edge_index, bool>("e:marks", false).first;
+  const auto r = PMP::constrained_fairing(
+    result, eps, CFP::feature_angle(angle, CGAL::parameters::edge_is_constrained_map(marks).number_of_iterations(1)));
+  if(!r)
   {
-    std::size_t sharp = 0, found = 0, wrong = 0;
-    for(auto e : edges(result))
-    {
-      sharp += clean_sharp[e];
-      found += clean_sharp[e] && marks[e];
-      wrong += marks[e] && !clean_sharp[e];
-    }
-    row.found = sharp > 0 ? double(found) / double(sharp) : 1;
-    row.false_share = row.marked > 0 ? double(wrong) / double(row.marked) : 0;
+    std::cerr << "error: " << r.message << std::endl;
+    std::exit(1);
   }
+  row.marked = r.number_of_feature_edges;
+  measure_detection(result, marks, clean_angle, row);
   return row;
 }
 
@@ -210,12 +256,21 @@ void print(const std::string& label, const Row& row)
             << row.evaluations << " evaluations)";
   if(row.marked > 0)
     std::cout << "  edges " << row.marked;
-  if(row.found > 0)
+  if(row.found >= 0)
     std::cout << "  found " << std::setprecision(3) << 100 * row.found << " %  false " << 100 * row.false_share << " %";
   std::cout << std::endl;
 }
 
 } // namespace
+
+const char* const all_parts = "fandisk,joint,blade,part,dragknob,anchor,cube-meshed,pinion,rotor,turbine,spool,"
+                              "couplingdown,mech-holes-shark,chamfered-block,gear,stepped-shaft,pyramid-boss";
+
+// The part's coarse mesh, made or read from `demo`.
+bool read_part(const std::string& name, const std::string& demo, Mesh& coarse)
+{
+  return made_part(name, coarse) || CGAL::IO::read_polygon_mesh(demo + "/" + name + ".off", coarse);
+}
 
 int main(int argc, char* argv[])
 {
@@ -226,33 +281,36 @@ int main(int argc, char* argv[])
   const double target_faces = std::stod(arguments.option("faces", "20000"));
   const int runs = arguments.runs;
   const std::string parts =
-    "," + arguments.option("parts", "fandisk,joint,blade,part,dragknob,anchor,cube-meshed") + ",";
+    "," + arguments.option("parts", all_parts) + ",";
   const std::string out = arguments.option("write", "");
   const auto seed = static_cast<unsigned int>(std::stoul(arguments.option("seed", "1")));
+  const bool detection_only = arguments.option("detection", "0") == "1";
   std::cout << machine_description() << std::endl;
   std::cout << "feature_angle(" << angle << "), runs " << runs << " (median time), noise seed " << seed << std::endl;
 
   // ratios of feature_angle to the default call, for the geometric means
   double log_normal = 0, log_near = 0, log_rms = 0, log_time = 0, log_near_accurate = 0, log_normal_accurate = 0;
   int cases = 0;
-  for(const std::string name : {"fandisk", "joint", "blade", "part", "dragknob", "anchor", "cube-meshed"})
+  std::stringstream names(all_parts);
+  for(std::string name; std::getline(names, name, ',');)
   {
     if(parts.find("," + name + ",") == std::string::npos)
       continue;
     Mesh coarse;
-    if(!CGAL::IO::read_polygon_mesh(demo + "/" + name + ".off", coarse))
+    if(!read_part(name, demo, coarse))
     {
       std::cout << name << ": not in " << demo << " (see get_demo_meshes.sh), skipped" << std::endl;
       continue;
     }
     Mesh clean = remeshed(coarse, angle, target_faces);
     const Edge_flags sharp = sharp_edges(clean, angle, "e:clean_sharp");
+    const std::vector<double> clean_angle = dihedral_angles(clean);
     const double h = mean_edge_length(clean);
     const Clean_surface surface(clean);
     const std::vector<bool> near = faces_near(clean, sharp, 2 * h);
-    std::size_t sharp_count = 0;
+    std::size_t sharp_count = 0, over_40 = 0;
     for(auto e : edges(clean))
-      sharp_count += sharp[e];
+      sharp_count += sharp[e], over_40 += clean_angle[e.idx()] > 40;
     if(!out.empty())
       write(out + "/" + name + "_clean.off", clean);
     for(double d : {0.25, 0.5})
@@ -263,13 +321,20 @@ int main(int argc, char* argv[])
       if(!out.empty())
         write(prefix + "noisy.off", noisy);
       const double eps = d * h;
-      std::cout << name << ", " << num_faces(clean) << " faces, " << sharp_count << " sharp edges, noise " << d
-                << " h:" << std::endl;
+      std::cout << name << ", " << num_faces(clean) << " faces, " << sharp_count << " sharp edges (" << over_40
+                << " over 40 degrees), noise " << d << " h:" << std::endl;
+      if(detection_only)
+      {
+        const Row row = detection(noisy, clean_angle, eps, angle);
+        std::cout << "  detection: edges " << row.marked << "  found " << std::setprecision(3) << 100 * row.found
+                  << " %  false " << 100 * row.false_share << " %" << std::endl;
+        continue;
+      }
       Row rows[METHODS];
       for(int m = 0; m < METHODS; ++m)
       {
         const bool written = !prefix.empty() && (m == DEFAULT || m == FEATURES);
-        rows[m] = run(Method(m), noisy, surface, sharp, near, eps, angle, runs,
+        rows[m] = run(Method(m), noisy, surface, sharp, clean_angle, near, eps, angle, runs,
                       written ? prefix + (m == DEFAULT ? "default" : "features") : "");
         print(method_name[m], rows[m]);
       }
@@ -302,6 +367,15 @@ int main(int argc, char* argv[])
       continue;
     const double eps = 0.25 * mean_edge_length(noisy);
     add_noise(noisy, eps, seed);
+    if(detection_only)
+    {
+      Mesh featured = noisy;
+      const auto marked = PMP::constrained_fairing(featured, eps, CFP::feature_angle(angle, CGAL::parameters::number_of_iterations(1)))
+                            .number_of_feature_edges;
+      std::cout << "  " << name << ": " << marked << " of " << num_edges(noisy) << " edges marked ("
+                << 100. * double(marked) / double(num_edges(noisy)) << " %)" << std::endl;
+      continue;
+    }
     Mesh plain = noisy, featured = noisy;
     const auto base = PMP::constrained_fairing(plain, eps);
     const auto ours = PMP::constrained_fairing(featured, eps, CFP::feature_angle(angle));

@@ -1,7 +1,8 @@
 #!/bin/bash
 # Fetches the CGAL demo meshes that fairing_accuracy measures (femur, camel, bull, lion-head,
 # homer, armadillo) and the CAD parts that fairing_features measures (fandisk, joint, blade,
-# part, dragknob, anchor, cube-meshed), and the real scans that point_set_scans and the
+# part, dragknob, anchor, cube-meshed, pinion, rotor, turbine, spool, couplingdown,
+# mech-holes-shark), and the real scans that point_set_scans and the
 # manual's point set figure read (kitten, oni, hippo, building, of data/points_3), and the CT
 # label image that label_map_speed.py reads (data/images/liver.inr.gz), from Debian's
 # libcgal-demo package (in /usr/share/doc/libcgal-dev/data.tar.gz), into DIR (default:
@@ -18,7 +19,8 @@ dpkg -x libcgal-demo_*.deb package
 mkdir -p "$dir"
 tar -xzf package/usr/share/doc/libcgal-dev/data.tar.gz -C "$work"
 mkdir -p "$dir/meshes"
-for name in femur camel bull lion-head homer armadillo fandisk joint blade part dragknob anchor cube-meshed; do
+for name in femur camel bull lion-head homer armadillo fandisk joint blade part dragknob anchor cube-meshed \
+    pinion rotor turbine spool couplingdown mech-holes-shark; do
   cp "$(find "$work" -path "*/data/meshes/$name.off" | head -1)" "$dir/meshes/"
 done
 mkdir -p "$dir/points_3"

@@ -4,8 +4,8 @@
 // The creases of a mesh, kept sharp: the energy has no hinge across a feature edge, and the
 // feature edges form curves (Curve_network.h) faired as curves (Curve_bending.h).
 //
-// Detection, where the user gives an angle: a hinge is a crease when the bilaterally filtered
-// normals of its two faces (Normal_filter.h) are more than the angle apart, and more than
+// Detection, where the user gives an angle: a hinge is a crease when the guided filtered normals
+// of its two faces (Guided_normal_filter.h) are more than the angle apart, and more than
 // `jump_ratio` times the smaller angle across each face's other hinges; then the curves that end
 // freely after fewer than `shortest_spur` edges (spurs off a crease, isolated edges) and the closed
 // curves of fewer edges are dropped, until none is left; the curves' detours off their line are
@@ -14,15 +14,16 @@
 // filtered normals: the dihedral angles of a noisy mesh scatter by tens of degrees (0.25 times the
 // edge length of noise turns a face by about 20 degrees), so a dihedral test on the input marks
 // noise and misses creases alike; the filter averages the normals on each side of a crease and
-// leaves the two sides apart. Why a jump: a crease turns the surface across one edge, while a
-// smooth bend of a coarse mesh, or what noise the filter left, turns it alike across the faces'
-// other edges (measured in doc/design_notes.md, "Creases").
+// leaves the two sides apart, even those of a 45-degree chamfer, which a bilateral filter
+// (Normal_filter.h) blended below 30 degrees. Why a jump: a crease turns the surface across one
+// edge, while a smooth bend of a coarse mesh, or what noise the filter left, turns it alike
+// across the faces' other edges (measured in doc/design_notes.md, "Creases").
 
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_FEATURE_EDGES_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Fidelity_anchor.h>
-#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Normal_filter.h>
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Guided_normal_filter.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Smoothed_start.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
@@ -42,11 +43,10 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Constrained_fairing {
 
-// The normal filter's steps (its Gaussian's width is the filter's, Normal_filter.h), the
-// shortest spur and the jump (top of this file).
+// The shortest spur and the jump (top of this file; the filter's settings are its own,
+// Guided_normal_filter.h).
 struct Feature_detection
 {
-  static constexpr std::size_t filter_steps = 10;
   static constexpr std::size_t shortest_spur = 8;
   static constexpr double jump_ratio = 1.5;
   // Taubin steps (Smoothed_start.h) before the jogs are judged: the accurate objective's
@@ -149,9 +149,9 @@ inline void drop_short_curves(std::vector<std::array<Index, 2> >& edges, std::si
 // jump (above), short curves dropped: sorted, each once.
 inline std::vector<std::array<Index, 2> > detect_feature_edges(const Hinge_mesh& mesh, const Points& X, double degrees)
 {
-  Normal_filter filter(mesh);
+  Guided_normal_filter filter(mesh);
   filter.set_points(X);
-  filter.filter(Feature_detection::filter_steps);
+  filter.filter(Guided_normal_filter::steps);
   // Each hinge's angle between the filtered normals, and each face's hinges.
   constexpr Index no_hinge = ~Index(0);
   std::vector<double> angle(mesh.hinges.size());
