@@ -16,13 +16,13 @@
 #ifndef CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_GUIDED_NORMAL_FILTER_H
 #define CGAL_PMP_INTERNAL_CONSTRAINED_FAIRING_GUIDED_NORMAL_FILTER_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Denoising/Face_normals.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Hinge_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Points.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Mesh/Rows_by_vertex.h>
 #include <CGAL/Polygon_mesh_processing/internal/Constrained_fairing/Parallel_for.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -44,33 +44,15 @@ public:
   explicit Guided_normal_filter(const Hinge_mesh& mesh) : m_mesh(mesh), m_patches(patches(mesh)) {}
 
   // The faces' unit normals, areas and centroids at the points X, before filtering.
-  void set_points(const Points& X)
-  {
-    const std::size_t nf = m_mesh.triangles.size();
-    m_normal.resize(nf);
-    m_centroid.resize(nf);
-    m_area.resize(nf);
-    parallel_for_blocks(nf, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for(std::size_t f = begin; f < end; ++f)
-      {
-        const Eigen::Vector3d normal = area_normal(m_mesh, X, f);
-        const double length = normal.norm();
-        m_area[f] = length / 2;
-        m_normal[f] = length > 0 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();
-        m_centroid[f] = centroid(m_mesh, X, f);
-      }
-    });
-  }
+  void set_points(const Points& X) { m_faces.set(m_mesh, X); }
 
   // `steps` steps of the filter, each with guides from the normals it starts from.
   void filter(std::size_t steps)
   {
-    const double spacing = centroid_spacing();
-    if(!(spacing > 0))
+    if(!m_faces.set_widths(m_mesh, guide_difference_sigma))
       return;
-    constexpr double sigma = guide_difference_sigma;
-    const double spatial = 1 / (2 * spacing * spacing), range = 1 / (2 * sigma * sigma);
-    const std::size_t nf = m_normal.size();
+    std::vector<Eigen::Vector3d>& normal = m_faces.normal;
+    const std::size_t nf = normal.size();
     std::vector<Eigen::Vector3d> mean(nf), guide(nf), filtered(nf);
     std::vector<double> spread(nf);
     for(std::size_t step = 0; step < steps; ++step)
@@ -95,18 +77,17 @@ public:
         {
           Eigen::Vector3d sum = Eigen::Vector3d::Zero();
           for(auto g = m_patches.begin(f); g != m_patches.end(f); ++g)
-            sum += m_area[*g] * std::exp(-spatial * (m_centroid[f] - m_centroid[*g]).squaredNorm()) *
-                   std::exp(-range * (guide[f] - guide[*g]).squaredNorm()) * m_normal[*g];
+            sum += m_faces.weight(f, *g, guide[f], guide[*g]) * normal[*g];
           const double length = sum.norm();
-          filtered[f] = length > 0 ? Eigen::Vector3d(sum / length) : m_normal[f];
+          filtered[f] = length > 0 ? Eigen::Vector3d(sum / length) : normal[f];
         }
       });
-      m_normal.swap(filtered);
+      normal.swap(filtered);
     }
   }
 
   // Face f's filtered unit normal (zero for a face of zero area).
-  const Eigen::Vector3d& normal(std::size_t f) const { return m_normal[f]; }
+  const Eigen::Vector3d& normal(std::size_t f) const { return m_faces.normal[f]; }
 
 private:
   // Each triangle's patch: the triangles round its corners, each once, itself among them.
@@ -141,33 +122,23 @@ private:
   {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for(auto g = m_patches.begin(f); g != m_patches.end(f); ++g)
-      sum += m_area[*g] * m_normal[*g];
+      sum += m_faces.area[*g] * m_faces.normal[*g];
     const double length = sum.norm();
     if(!(length > 0))
     {
-      mean = m_normal[f];
+      mean = m_faces.normal[f];
       return 4; // a patch of no area is the least consistent of all
     }
     mean = sum / length;
     double spread = 0;
     for(auto g = m_patches.begin(f); g != m_patches.end(f); ++g)
-      spread = (std::max)(spread, (m_normal[*g] - mean).squaredNorm());
+      spread = (std::max)(spread, (m_faces.normal[*g] - mean).squaredNorm());
     return spread;
-  }
-
-  // The mean distance between the centroids of edge neighbours: the spatial Gaussian's width.
-  double centroid_spacing() const
-  {
-    double sum = 0;
-    for(const Hinge& h : m_mesh.hinges)
-      sum += (m_centroid[h.f[0]] - m_centroid[h.f[1]]).norm();
-    return m_mesh.hinges.empty() ? 0 : sum / double(m_mesh.hinges.size());
   }
 
   const Hinge_mesh& m_mesh;
   Rows_by_vertex<Index> m_patches; // by triangle: the triangles round its corners
-  std::vector<Eigen::Vector3d> m_normal, m_centroid;
-  std::vector<double> m_area;
+  Face_normals m_faces;
 };
 
 } // namespace Constrained_fairing
