@@ -28,7 +28,9 @@
 //    label split;
 //  - the untangling alone, on a patch whose triangles fold: no crossing left, every point and its
 //    new box within the box it had;
-//  - nets appended to a soup already there are the same, their indices shifted.
+//  - nets appended to a soup already there are the same, their indices shifted;
+//  - the nets of a box of a map (`first_voxel`): the points of the cells 10 voxels or more from
+//    its cut side are the whole map's, bit for bit.
 
 #include "test_support.h"
 
@@ -547,6 +549,37 @@ void check_appending()
   }
 }
 
+// label_surface_nets() on a box of a larger map (`first_voxel`): the points of the cells 10
+// voxels or more from the box's cut side are the whole map's, bit for bit and in their order, on
+// random voxels of 4 labels and an anisotropic spacing, whose crossing tests are near coplanar.
+void check_chunk()
+{
+  const std::size_t n = 16, cut = 3, halo = 10;
+  std::mt19937 random(11);
+  std::vector<Label> labels(n * n * n);
+  for(Label& l : labels)
+    l = Label(random() % 4);
+  const std::array<double, 3> spacing{0.7, 1, 1.3}, origin{0.5, -2, 3};
+  // The points of cells (i, j, k) with i >= `from`, as nets of `box` starting at voxel `first` give them.
+  const auto far_points = [&](const Label* box, std::size_t voxels, std::size_t first, std::size_t from) {
+    std::vector<Point> points, kept;
+    std::vector<Triangle> triangles;
+    std::vector<std::array<Label, 2> > face_labels;
+    std::vector<std::array<double, 3> > half;
+    PMP::label_surface_nets(box, {voxels, n, n}, spacing, origin, points, triangles, face_labels, half, Label(0),
+                            PMP::label_box_margin, {first, 0, 0});
+    for(const Point& p : points)
+      if(std::floor((p.x() - origin[0]) / spacing[0]) + 1 >= double(from))
+        kept.push_back(p);
+    return kept;
+  };
+  const std::size_t from = cut + 1 + halo;
+  const std::vector<Point> whole = far_points(labels.data(), n, 0, from);
+  const std::vector<Point> chunk = far_points(labels.data() + cut * n * n, n - cut, cut, from);
+  CHECK(!whole.empty() && chunk == whole);
+  std::cout << "  a chunk's nets: " << chunk.size() << " points of the whole map's " << whole.size() << "\n";
+}
+
 int main()
 {
   for(const std::array<double, 3> spacing : {std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 1, 3}})
@@ -564,5 +597,6 @@ int main()
   check_ball_cells();
   check_untangling();
   check_appending();
+  check_chunk();
   return test::report("test_label_surfaces");
 }

@@ -16,7 +16,8 @@ K. Polthier, "Constraint-based fairing of surface meshes" (SGP 2007), on numpy a
   and label maps, on a Dask cluster, also from the command line:
   ``python3 -m cgal_constrained_fairing.batch IN... -o OUT_DIR``;
 - `fair_tiled` (module `cgal_constrained_fairing.tiles`) fairs one mesh too large for one
-  process as tiles on a Dask cluster: ``python3 -m cgal_constrained_fairing.tiles IN OUT``.
+  process as tiles on a Dask cluster: ``python3 -m cgal_constrained_fairing.tiles IN OUT``;
+  `label_surfaces_tiled` makes and fairs a label volume's surfaces so, chunk by chunk.
 
 Example
 -------
@@ -38,7 +39,7 @@ __version__ = "0.1.0"
 
 __all__ = [
     "LABEL_BOX_MARGIN", "Defect", "InputError", "LabelSurfaces", "MeshProperties", "Report", "Status", "estimate_noise_level", "fair",
-    "fair_files", "fair_interfaces", "fair_tiled", "fair_points", "PointsReport", "label_surfaces", "max_threads", "mean_edge_length",
+    "fair_files", "fair_interfaces", "fair_tiled", "fair_points", "label_surfaces_tiled", "PointsReport", "label_surfaces", "max_threads", "mean_edge_length",
     "is_point_set_file", "read_label_map", "read_mesh", "read_points", "set_max_threads", "write_mesh",
     "write_points",
 ]
@@ -52,4 +53,7 @@ def __getattr__(name):
     if name == "fair_tiled":
         from .tiles import fair_tiled
         return fair_tiled
+    if name == "label_surfaces_tiled":
+        from .tiles import label_surfaces_tiled
+        return label_surfaces_tiled
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -202,12 +202,7 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
             raise invalid("give either affine, or spacing and origin")
         frame = _Frame(affine)
         spacing = frame.spacing
-    h = numbers_array(spacing, "spacing", [(3,)])
-    o = numbers_array(origin, "origin", [(3,)])
-    if not (np.isfinite(h).all() and (h > 0).all()):
-        raise invalid(f"spacing must be three positive finite numbers (got {h.tolist()})")
-    if not np.isfinite(o).all():
-        raise invalid(f"origin must be three finite numbers (got {o.tolist()})")
+    h, o = _checked_spacing(spacing, origin)
     L = L.astype(np.int64)  # a copy: the user's array is never touched
     if labels_to_mesh is not None:
         L[~np.isin(L, np.asarray(labels_to_mesh, dtype=np.int64))] = background
@@ -228,6 +223,17 @@ def label_surfaces(labels: ArrayLike, spacing: Sequence[float] = (1, 1, 1),
     if frame is not None:
         W, V, F = frame.to_world(W), frame.to_world(V), frame.faces(F)
     return LabelSurfaces(W, F, FL, V, H, report, present)
+
+
+def _checked_spacing(spacing, origin) -> Tuple[np.ndarray, np.ndarray]:
+    """`spacing` and `origin` as arrays of 3 floats, checked."""
+    h = numbers_array(spacing, "spacing", [(3,)])
+    o = numbers_array(origin, "origin", [(3,)])
+    if not (np.isfinite(h).all() and (h > 0).all()):
+        raise invalid(f"spacing must be three positive finite numbers (got {h.tolist()})")
+    if not np.isfinite(o).all():
+        raise invalid(f"origin must be three finite numbers (got {o.tolist()})")
+    return h, o
 
 
 def _labels_of(labels, background) -> list:

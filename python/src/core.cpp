@@ -530,7 +530,8 @@ using Label_array = py::array_t<Label, py::array::c_style>;
 // label_surface_nets() on a C-contiguous 3-D array of labels, as (points, triangles, labels,
 // box half-extents).
 py::tuple label_surface_nets(const Label_array& labels, const std::array<double, 3>& spacing,
-                             const std::array<double, 3>& origin, Label background)
+                             const std::array<double, 3>& origin, Label background,
+                             const std::array<std::size_t, 3>& first_voxel)
 {
   const std::array<std::size_t, 3> size{std::size_t(labels.shape(0)), std::size_t(labels.shape(1)),
                                         std::size_t(labels.shape(2))};
@@ -541,7 +542,7 @@ py::tuple label_surface_nets(const Label_array& labels, const std::array<double,
   {
     py::gil_scoped_release release;
     PMP::label_surface_nets(labels.data(), size, spacing, origin, points, triangles, face_labels, half_extents,
-                            background);
+                            background, PMP::label_box_margin, first_voxel);
   }
   Float_array V({py::ssize_t(points.size()), py::ssize_t(3)}), H({py::ssize_t(points.size()), py::ssize_t(3)});
   Index_array F({py::ssize_t(triangles.size()), py::ssize_t(3)});
@@ -1119,7 +1120,7 @@ void bind_label_maps(py::module_& m)
     },
     py::arg("affine"));
   m.def("label_surface_nets", &label_surface_nets, py::arg("labels"), py::arg("spacing"), py::arg("origin"),
-        py::arg("background"));
+        py::arg("background"), py::arg("first_voxel") = std::array<std::size_t, 3>{0, 0, 0});
   m.def("fair_interfaces", &fair_interfaces, py::arg("vertices"), py::arg("faces"), py::arg("face_labels"),
         py::arg("options"), py::arg("tolerance"), py::arg("fixed"), py::arg("box_half_extents"),
         py::arg("box_centers"), py::arg("progress"));

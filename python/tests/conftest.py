@@ -43,6 +43,19 @@ def noisy(V, F, amplitude, seed=1):
     return V + (amplitude * h) * rng.uniform(-1, 1, (len(V), 1)) * V
 
 
+def lost_once(task, marker: Path, when):
+    """`task` (of a run's folder, a tile, a sweep and more) lost once, when its tile and sweep
+    are `when`, after its work: a worker lost after its write, before Dask heard of it. The loss
+    is marked in the file `marker`, since Dask hands its workers a copy of the function."""
+    def lost(folder, tile, sweep, *arguments):
+        done = task(folder, tile, sweep, *arguments)
+        if (tile, sweep) == when and not marker.exists():
+            marker.write_text(f"tile {tile}, sweep {sweep}")
+            raise RuntimeError("worker lost")
+        return done
+    return lost
+
+
 @pytest.fixture(scope="session")
 def sphere():
     """A noisy sphere of 5120 triangles, noise up to 0.2 h along the normal."""

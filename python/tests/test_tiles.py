@@ -28,7 +28,7 @@ from cgal_constrained_fairing._fairing import call_options, result_of
 from cgal_constrained_fairing.tiles import BYTES_PER_TRIANGLE, MOTION_TOLERANCE, fair_tiled
 from cgal_constrained_fairing.tiles import _partition, _ply_map, _sweeps
 
-from conftest import icosphere, noisy
+from conftest import icosphere, lost_once, noisy
 
 # The small meshes here are cut into tiles smaller than their 18 rings of ghosts, which
 # fair_tiled warns of (test_tiles_too_small_for_their_ghosts_warn).
@@ -431,22 +431,15 @@ def test_a_scheduler_without_workers_is_a_clear_error(scan, tmp_path, monkeypatc
 def test_a_task_lost_after_its_write_is_run_again_with_the_same_result(scan, tmp_path, monkeypatch):
     # A worker lost after a task wrote its file but before Dask heard of it: Dask runs the task
     # again (its retries), which writes the same file; the output is the same bit for bit. The
-    # loss is marked in a file: Dask hands its workers a copy of the function and its closure.
+    # loss is marked in a file.
     import distributed
     path, V, F, _, eps = scan
-    fair_tile, marker = _sweeps.fair_tile, tmp_path / "lost"
-
-    def lost_once(folder, t, sweep, *arguments):
-        done = fair_tile(folder, t, sweep, *arguments)
-        if (t, sweep) == (0, 2) and not marker.exists():
-            marker.write_text("tile 0, sweep 2")
-            raise RuntimeError("worker lost")
-        return done
+    marker = tmp_path / "lost"
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster, set_as_default=False) as in_process:
         fair_tiled(path, tmp_path / "kept.ply", eps, client=in_process, tile_memory=budget(F, 8))
-        monkeypatch.setattr(_sweeps, "fair_tile", lost_once)
+        monkeypatch.setattr(_sweeps, "fair_tile", lost_once(_sweeps.fair_tile, marker, (0, 2)))
         fair_tiled(path, tmp_path / "lost.ply", eps, client=in_process, tile_memory=budget(F, 8))
     assert marker.read_text() == "tile 0, sweep 2"
     assert (tmp_path / "lost.ply").read_bytes() == (tmp_path / "kept.ply").read_bytes()

@@ -94,13 +94,18 @@ made from the labels alone: the same map gives the same soup whatever is done wi
 \param labels the label map, `size[0] * size[1] * size[2]` values in C order
 \param size the number of voxels along each axis
 \param spacing the distance between voxel centres along each axis
-\param origin the centre of voxel `(0, 0, 0)`
+\param origin the centre of voxel `(0, 0, 0)`, or with `first_voxel` that of the larger map
 \param points the points, appended to
 \param triangles the triangles, as indices into `points` counted from its size on entry
 \param face_labels the two labels of each triangle, one per triangle
 \param box_half_extents the half-extents of each point's box, one per point, appended to
 \param background the label of the outside, which gets no surface of its own
 \param margin the margin of the boxes, a fraction of the spacing in `[0, 0.125)`
+\param first_voxel where `labels` is a box of a larger map (a chunk of a volume too large to be
+       read whole), the index in that map of its voxel `(0, 0, 0)`: the points are placed as the
+       larger map's nets place them, bit for bit, so that the cells of two chunks that read
+       enough voxels around them get the same points (the voxels outside `labels` still count as
+       `background`)
 
 \pre `0 <= margin < 0.125`
 */
@@ -109,11 +114,12 @@ void label_surface_nets(const Label* labels, const std::array<std::size_t, 3>& s
                         const std::array<double, 3>& spacing, const std::array<double, 3>& origin,
                         PointRange& points, TriangleRange& triangles, LabelPairRange& face_labels,
                         BoxRange& box_half_extents, const Label background = Label(0),
-                        const double margin = label_box_margin)
+                        const double margin = label_box_margin,
+                        const std::array<std::size_t, 3>& first_voxel = {0, 0, 0})
 {
   namespace Cf = internal::Constrained_fairing;
   CGAL_precondition(margin >= 0 && margin < 0.125);
-  const Cf::Label_grid<Label> grid(labels, size, background);
+  const Cf::Label_grid<Label> grid(labels, size, background, first_voxel);
   const std::size_t first = points.size(), first_triangle = triangles.size(), first_box = box_half_extents.size();
   const Cf::Net_points<Label> net(grid, spacing, origin, margin, points, box_half_extents);
   Cf::make_net_triangles(grid, net, points, triangles, face_labels);

@@ -44,8 +44,9 @@ from ..batch._epsilon import parse_eps
 from . import _partition, _ply_map, _sweeps
 from ._streamed_conversion import NotStreamed, convert_streamed
 from ._command_line import main
+from ._label_volumes import TiledLabelReport, label_surfaces_tiled
 
-__all__ = ["TiledReport", "fair_tiled", "main"]
+__all__ = ["TiledLabelReport", "TiledReport", "fair_tiled", "label_surfaces_tiled", "main"]
 
 # What a tile's task holds per triangle of its mesh, above an idle worker: measured 553 bytes at
 # 197,000 triangles (the library's call holds about 340 for the tile's problem; the part that

@@ -21,14 +21,18 @@ class Label_grid
 public:
   using Signed = std::ptrdiff_t;
 
-  Label_grid(const Label* labels, const std::array<std::size_t, 3>& size, Label background)
-    : m_labels(labels), m_size(size), m_background(background)
+  // `first` is the index of voxel (0, 0, 0) in a larger map that the grid is a box of.
+  Label_grid(const Label* labels, const std::array<std::size_t, 3>& size, Label background,
+             const std::array<std::size_t, 3>& first = {0, 0, 0})
+    : m_labels(labels), m_size(size), m_background(background), m_first(first)
   {
   }
 
   Label background() const { return m_background; }
   // The number of voxels along axis a.
   Signed voxels(int a) const { return Signed(m_size[std::size_t(a)]); }
+  // Cell or voxel index c along axis a in the larger map.
+  double in_map(Signed c, int a) const { return double(c + Signed(m_first[std::size_t(a)])); }
   // Voxel (i, j, k), or the background outside the map.
   Label label(Signed i, Signed j, Signed k) const
   {
@@ -57,6 +61,7 @@ private:
   const Label* m_labels;
   std::array<std::size_t, 3> m_size;
   Label m_background;
+  std::array<std::size_t, 3> m_first;
 };
 
 } // namespace Constrained_fairing

@@ -135,7 +135,7 @@ private:
       for(int a = 0; a < 3; ++a)
       {
         const double lo = dual.low(s, a), hi = dual.high(s, a);
-        centre[a] = origin[std::size_t(a)] + (double(c[a]) - 0.5 + 0.5 * (lo + hi)) * spacing[std::size_t(a)];
+        centre[a] = origin[std::size_t(a)] + (grid.in_map(c[a], a) - 0.5 + 0.5 * (lo + hi)) * spacing[std::size_t(a)];
         half[std::size_t(a)] = 0.5 * (hi - lo) * spacing[std::size_t(a)];
       }
       points.push_back(Point(centre[0], centre[1], centre[2]));
