@@ -88,6 +88,16 @@ def read_label_map(path: "os.PathLike[str] | str") -> Tuple[np.ndarray, np.ndarr
     return data, np.asarray(affine, dtype=np.float64)
 
 
+def nifti_affine(image) -> np.ndarray:
+    """The affine of a nibabel NIfTI image: its sform if its code is set, else its qform if
+    its code is set, else the NIfTI standard's method 1, as the command-line tool reads it
+    (nibabel would centre the volume and mirror x, as for Analyze files)."""
+    header = image.header
+    if int(header["sform_code"]) == 0 and int(header["qform_code"]) == 0:
+        return np.diag([*header.get_zooms()[:3], 1.0])
+    return np.asarray(image.affine, dtype=np.float64)
+
+
 def _read_nifti(path: str):
     try:
         import nibabel
@@ -104,11 +114,6 @@ def _read_nifti(path: str):
             data = proxy.get_unscaled()
         else:
             data = np.asanyarray(proxy)
-        header = image.header
-        if int(header["sform_code"]) == 0 and int(header["qform_code"]) == 0:
-            # The NIfTI standard's method 1, as the command-line tool reads it (nibabel would
-            # centre the volume and mirror x, as for Analyze files).
-            return np.asarray(data), np.diag([*header.get_zooms()[:3], 1.0])
-        return np.asarray(data), image.affine
+        return np.asarray(data), nifti_affine(image)
     except (OSError, EOFError, ValueError, nibabel.filebasedimages.ImageFileError) as error:
         raise ValueError(f"{path}: not a valid NIfTI file ({error})") from None

@@ -285,3 +285,66 @@ def test_a_full_disk_leaves_no_output(tmp_path, monkeypatch):
                 label_surfaces_tiled(L, out, client=in_process, chunk_cells=16)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["notes.txt"]
+
+
+def oriented_triangles(V, F):
+    """A surface's triangles as a set of corner coordinates (to 1e-9), each from its least."""
+    rows = set()
+    for f in np.round(V, 9)[F].tolist():
+        first = min(range(3), key=lambda c: f[c])
+        rows.add(tuple(tuple(f[(first + c) % 3]) for c in range(3)))
+    return rows
+
+
+def test_a_nifti_files_affine_places_the_surfaces(client, tmp_path):
+    # A mirrored x axis, voxel sizes and a translation: the surfaces are the in-core call's
+    # given the file's affine, in the world, oriented outward.
+    nibabel = pytest.importorskip("nibabel")
+    L = voronoi((20, 18, 22), 4, 6)
+    affine = np.diag([-0.8, 1.0, 1.3, 1.0])
+    affine[:3, 3] = [12.0, -3.0, 5.5]
+    nibabel.save(nibabel.Nifti1Image(L, affine), str(tmp_path / "seg.nii.gz"))
+    report = label_surfaces_tiled(tmp_path / "seg.nii.gz", tmp_path / "s", client=client, chunk_cells=32)
+    assert report.chunks == (1, 1, 1)
+    labels, stored = cf.read_label_map(tmp_path / "seg.nii.gz")  # the header's float32 affine
+    r = cf.label_surfaces(labels, affine=stored)
+    surfaces = read_surfaces(tmp_path / "s")
+    assert sorted(surfaces) == r.labels.tolist()
+    for label, (V, F) in surfaces.items():
+        assert oriented_triangles(V, F) == oriented_triangles(*r.surface(label))
+    with pytest.raises(ValueError, match="either affine, or spacing and origin"):
+        label_surfaces_tiled(L, tmp_path / "t", (1, 1, 1), affine=affine, client=client)
+
+
+def test_command_line(tmp_path, capsys):
+    import subprocess
+    import sys
+    zarr = pytest.importorskip("zarr")
+    L = voronoi((20, 18, 22), 3, 2)
+    zarr.save_array(str(tmp_path / "seg.zarr"), L, chunks=(10, 10, 10))
+    environment = dict(__import__("os").environ, PYTHONPATH=str(Path(cf.__file__).resolve().parents[1]))
+    run = subprocess.run([sys.executable, "-m", "cgal_constrained_fairing.tiles", str(tmp_path / "seg.zarr"),
+                          str(tmp_path / "s"), "--spacing", "0.5", "0.5", "2", "--chunk-cells", "16"],
+                         env=environment, capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "5 labels" in run.stdout and "converged=True" in run.stdout
+    r = cf.label_surfaces(L, (0.5, 0.5, 2))
+    assert sorted(read_surfaces(tmp_path / "s")) == r.labels.tolist()
+    from cgal_constrained_fairing.tiles._command_line import main
+    with pytest.raises(SystemExit):
+        main([str(tmp_path / "seg.zarr"), str(tmp_path / "t"), "--eps", "0.1"])
+    assert "--eps is for meshes" in capsys.readouterr().err
+    assert not (tmp_path / "t").exists()
+
+
+def test_chunks_shrink_to_fit_the_tile_memory(volume, client, tmp_path):
+    from cgal_constrained_fairing.tiles._label_volumes import BYTES_PER_TRIANGLE
+    report = label_surfaces_tiled(volume, tmp_path / "a", SPACING, client=client, tile_memory="150MB")
+    assert report.chunks != (1, 1, 1)
+    cells = np.prod(np.asarray(volume.shape) + 1)
+    density = report.triangles / cells  # the mean, at most the densest chunk's
+    size = report.chunk_cells[0]
+    assert 16 < size < 45 and (size + 22) ** 3 * density * BYTES_PER_TRIANGLE <= 150e6
+    fixed = label_surfaces_tiled(volume, tmp_path / "b", SPACING, client=client, chunk_cells=48,
+                                 tile_memory="60MB")
+    assert fixed.chunks == (1, 1, 1)

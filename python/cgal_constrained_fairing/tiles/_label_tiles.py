@@ -142,10 +142,12 @@ def apply_sweep(folder: Path, chunk: int, sweep: int) -> None:
     os.replace(root / f"{chunk}.sweep{sweep}.npy", root / f"{chunk}.state.npy")
 
 
-def write_label(folder: str, label: int, chunks: List[int], shape, size, grid, path: str) -> Dict[str, Any]:
+def write_label(folder: str, label: int, chunks: List[int], shape, size, grid, path: str,
+                to_world=None) -> Dict[str, Any]:
     """`label`'s closed surface from the triangles of `chunks` that name it, at the current
-    points, written to `path` (its format by its extension); its triangles in their canonical
-    order, so that the file does not depend on the chunks."""
+    points moved by `to_world` (axes, translation, whether it mirrors) where given, written to
+    `path` (its format by its extension); its triangles in their canonical order, so that the
+    file does not depend on the chunks."""
     root = Path(folder) / "chunks"
     triangles, face_labels = [], []
     for c in chunks:
@@ -162,6 +164,10 @@ def write_label(folder: str, label: int, chunks: List[int], shape, size, grid, p
         own_keys = np.load(root / f"{c}.nets.npz")["keys"]
         points[mine] = np.load(root / f"{c}.state.npy")[np.searchsorted(own_keys, keys[mine])]
     V, F = _core.label_surface(points, local.reshape(-1, 3).astype(np.int64), FL, int(label))
+    if to_world is not None:  # as label_surfaces moves its points out of the voxels' frame
+        axes, translation, mirrors = to_world
+        V = V @ np.asarray(axes).T + np.asarray(translation)
+        F = np.ascontiguousarray(F[:, [0, 2, 1]]) if mirrors else F
     try:
         write_mesh(path, V, F)
     except OSError as error:

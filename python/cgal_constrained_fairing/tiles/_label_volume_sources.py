@@ -8,7 +8,7 @@ folder as a ``.npy`` file, a slab at a time where it is read from a file.
 
 import dataclasses
 from pathlib import Path
-from typing import Sequence, Tuple
+from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -28,6 +28,7 @@ class VolumeSource:
     shape: Tuple[int, int, int]
     dtype: str
     component: str = ""
+    affine: Optional[Tuple[Tuple[float, ...], ...]] = None  # a NIfTI file's
 
     def open(self):
         """The volume as an array-like (not for TIFF stacks, read by `read`)."""
@@ -47,6 +48,15 @@ class VolumeSource:
             pages = pages.reshape((box[0].stop - box[0].start,) + self.shape[1:])
             return np.ascontiguousarray(pages[:, box[1], box[2]], dtype=np.int64)
         return np.ascontiguousarray(self.open()[box], dtype=np.int64)
+
+
+VOLUME_SUFFIXES = (".zarr", ".n5", ".tif", ".tiff", ".nii", ".nii.gz")
+
+
+def is_label_volume(path: "str | Path") -> bool:
+    """Whether `path` names a label volume: by its suffix, or a folder holding a zarr array."""
+    path = Path(path)
+    return path.name.lower().endswith(VOLUME_SUFFIXES) or (path / ".zarray").is_file()
 
 
 def volume_source(volume, folder: Path) -> VolumeSource:
@@ -93,7 +103,12 @@ def _converted_nifti(path: Path, folder: Path) -> VolumeSource:
     """A NIfTI file written once into `folder` as .npy, a slab of the first axis at a time
     through nibabel's proxy, so that the whole volume is never held."""
     import nibabel
-    proxy = nibabel.load(str(path)).dataobj
+    from .._label_map_files import nifti_affine
+    try:
+        image = nibabel.load(str(path))
+    except (OSError, EOFError, ValueError, nibabel.filebasedimages.ImageFileError) as error:
+        raise ValueError(f"{path}: not a valid NIfTI file ({error})") from None
+    proxy = image.dataobj
     shape = tuple(int(s) for s in proxy.shape[:3])
     if len(proxy.shape) > 3 and int(np.prod(proxy.shape[3:])) != 1:
         raise ValueError(f"{path}: a label volume has 3 dimensions (got shape {proxy.shape})")
@@ -102,9 +117,13 @@ def _converted_nifti(path: Path, folder: Path) -> VolumeSource:
     step = max(1, SLAB_VOXELS // max(1, shape[1] * shape[2]))
     for i in range(0, shape[0], step):
         slab = np.asarray(proxy[i:i + step])
+        if slab.dtype.kind == "f" and not np.array_equal(slab, np.round(slab)):
+            raise ValueError(f"{path}: labels must be whole numbers (its header scales them to "
+                             f"{slab[slab != np.round(slab)].flat[0]})")
         out[i:i + step] = slab.reshape(slab.shape[:3])
     out.flush()
-    return _checked(VolumeSource("npy", str(target), shape, out.dtype.str))
+    affine = tuple(tuple(float(x) for x in row) for row in nifti_affine(image))
+    return _checked(VolumeSource("npy", str(target), shape, out.dtype.str, affine=affine))
 
 
 def _written(array, folder: Path) -> VolumeSource:

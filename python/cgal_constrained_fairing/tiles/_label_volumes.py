@@ -15,9 +15,12 @@ from .. import _core
 from . import _label_tiles
 from ._label_volume_sources import volume_source
 
-# The cells a chunk owns along each axis, by default: a tile of 128^3 cells of a Voronoi volume
-# of 500 labels holds about 0.2 M triangles.
+# The cells a chunk owns along each axis at first; fewer where the nets show its tile would not
+# fit `tile_memory`.
 CHUNK_CELLS = 128
+# What a tile's task holds per triangle of its tile above an idle worker: 1.8 and 1.9 kB at 0.29
+# and 0.74 M triangles (a 256^3 volume of 512 labels in chunks of 64^3 and 96^3 cells).
+BYTES_PER_TRIANGLE = 2000
 # The sweeps end when the seams' points moved by at most this fraction of epsilon (the voxel
 # diagonal) in one, as a root mean square: the meshes' tolerance (tiles/__init__.py).
 MOTION_TOLERANCE = 0.005
@@ -73,9 +76,11 @@ class TiledLabelReport:
                 f"sweeps, converged={self.converged})")
 
 
-def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str", spacing: Sequence[float] = (1, 1, 1),
-                         origin: Sequence[float] = (0, 0, 0), *, client=None,
-                         chunk_cells=CHUNK_CELLS, background: int = 0, format: str = "ply",
+def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str",
+                         spacing: Optional[Sequence[float]] = None,
+                         origin: Optional[Sequence[float]] = None, *, affine=None, client=None,
+                         chunk_cells=None, tile_memory="2GiB", background: int = 0,
+                         format: str = "ply",
                          force: bool = False, work_dir: "Optional[os.PathLike[str] | str]" = None,
                          max_iterations: Optional[int] = None) -> TiledLabelReport:
     """The faired surfaces of a label volume too large for one process, one file per label.
@@ -99,13 +104,21 @@ def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str", spacing: Seq
         The folder of the surfaces. A new folder appears with all its files at once; an
         existing one gets only the ``label_<L>`` files, refused if one of them exists unless
         `force`, renamed into place once all are complete.
-    spacing, origin : sequences of 3 floats
-        As in `label_surfaces`.
+    spacing, origin : sequences of 3 floats, optional
+        As in `label_surfaces`; default (1, 1, 1) and (0, 0, 0), or a NIfTI file's affine.
+    affine : array_like, shape (4, 4), optional
+        Instead of `spacing` and `origin`, as in `label_surfaces`: the surfaces are faired in
+        the voxels' frame and written in the world. Default: a NIfTI file's own (its sform, else
+        its qform, else its voxel sizes, as `read_label_map` reads it).
     client : distributed.Client, optional
         The cluster; default a `distributed.LocalCluster` of single-threaded workers for the
         run. On a cluster `work_dir` must be on a file system that every worker shares.
-    chunk_cells : int or sequence of 3 ints
-        The cells a chunk owns along each axis, at least 16.
+    chunk_cells : int or sequence of 3 ints, optional
+        The cells a chunk owns along each axis, at least 16. Default: 128, fewer where the
+        densest chunk's nets show that its tile (11 cells more on every side) would hold more
+        than `tile_memory` at about 2,000 bytes per triangle.
+    tile_memory : str or int
+        What a tile's task may hold (``"2GiB"``, ``"500MB"`` or bytes).
     background : int
         The label of the outside, which gets no surface.
     format : {"ply", "off", "obj", "stl"}
@@ -122,11 +135,13 @@ def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str", spacing: Seq
     -------
     TiledLabelReport
     """
-    from .._labels import _checked_spacing
-    h, o = _checked_spacing(spacing, origin)
+    if affine is not None and (spacing is not None or origin is not None):
+        raise ValueError("give either affine, or spacing and origin")
     if format not in FORMATS:
         raise ValueError(f"format must be one of {FORMATS} (got {format!r})")
-    size = _chunk_size(chunk_cells)
+    from dask.utils import parse_bytes
+    size = _chunk_size(CHUNK_CELLS if chunk_cells is None else chunk_cells)
+    budget = parse_bytes(tile_memory) if isinstance(tile_memory, str) else int(tile_memory)
     out_dir = Path(out_dir).resolve()
     _check_not_input(volume, out_dir)
     if out_dir.exists() and not out_dir.is_dir():
@@ -136,11 +151,27 @@ def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str", spacing: Seq
     try:
         from . import _cluster
         with _cluster(client) as (running, threads):
-            run = _Run(folder, volume_source(volume, folder), h, o, size, int(background), running, threads)
-            return run.surfaces(out_dir, format, force, {} if max_iterations is None
-                                else {"max_iterations": int(max_iterations)})
+            source = volume_source(volume, folder)
+            if affine is None and spacing is None and origin is None:
+                affine = source.affine
+            run = _Run(folder, source, _voxel_frame(spacing, origin, affine), int(background),
+                       running, threads)
+            return run.surfaces(out_dir, size, budget if chunk_cells is None else None, format, force,
+                                {} if max_iterations is None else {"max_iterations": int(max_iterations)})
     finally:
         shutil.rmtree(folder)
+
+
+def _voxel_frame(spacing, origin, affine):
+    """The voxels' spacing and origin the nets are made in, and the move of the points into the
+    world (axes, translation, whether it mirrors) or None."""
+    from .._labels import _checked_spacing, _Frame
+    if affine is None:
+        h, o = _checked_spacing((1, 1, 1) if spacing is None else spacing,
+                                (0, 0, 0) if origin is None else origin)
+        return h, o, None
+    frame = _Frame(affine)
+    return frame.spacing, np.zeros(3), (frame.axes.tolist(), frame.translation.tolist(), bool(frame.mirrors))
 
 
 def _chunk_size(chunk_cells) -> np.ndarray:
@@ -153,15 +184,35 @@ def _chunk_size(chunk_cells) -> np.ndarray:
 class _Run:
     """One run's folder, chunks and sweeps."""
 
-    def __init__(self, folder: Path, source, h, o, size, background: int, client, threads: int):
-        self.folder, self.source, self.h, self.o = folder, source, h, o
-        self.size, self.background, self.client, self.threads = size, background, client, threads
-        (folder / "chunks").mkdir()
-        cells = np.asarray(source.shape) + 1
+    def __init__(self, folder: Path, source, frame, background: int, client, threads: int):
+        self.folder, self.source = folder, source
+        self.h, self.o, self.to_world = frame
+        self.background, self.client, self.threads = background, client, threads
+        self.seconds: Dict[str, float] = {}
+
+    def _layout(self, size: np.ndarray) -> None:
+        """Chunks of `size` cells, and a new folder for their files."""
+        shutil.rmtree(self.folder / "chunks", ignore_errors=True)
+        (self.folder / "chunks").mkdir()
+        cells = np.asarray(self.source.shape) + 1
+        self.size = size
         self.grid = tuple(int(g) for g in -(-cells // size))
         self.boxes = [(np.asarray(c) * size, np.minimum((np.asarray(c) + 1) * size, cells))
                       for c in itertools.product(*[range(g) for g in self.grid])]
-        self.seconds: Dict[str, float] = {}
+
+    def _nets(self, size: np.ndarray, budget: Optional[int]) -> List[Dict[str, Any]]:
+        """The chunks' nets; with a `budget`, made again once in smaller chunks where the
+        densest chunk's tile would hold more (a chunk's triangles grow with its cells)."""
+        self._layout(size)
+        nets = self._timed("nets", [self._submit(_label_tiles.nets_task, self.source, c, lo, hi,
+                                                 self.h.tolist(), self.o.tolist(), self.background)
+                                    for c, (lo, hi) in enumerate(self.boxes)])
+        density = max(n["triangles"] / np.prod(hi - lo) for n, (lo, hi) in zip(nets, self.boxes))
+        reach = 2 * _label_tiles.REACH
+        if budget is None or density * np.prod(size + reach) * BYTES_PER_TRIANGLE <= budget:
+            return nets
+        fitting = int(np.cbrt(budget / BYTES_PER_TRIANGLE / density)) - reach
+        return self._nets(np.minimum(size, max(fitting, 2 * _label_tiles.SEAM)), None)
 
     def _timed(self, name: str, futures) -> List[Dict[str, Any]]:
         clock = time.perf_counter()
@@ -172,10 +223,8 @@ class _Run:
     def _submit(self, function, *args):
         return self.client.submit(function, str(self.folder), *args, pure=False, retries=2)
 
-    def surfaces(self, out_dir: Path, format: str, force: bool, keywords) -> TiledLabelReport:
-        nets = self._timed("nets", [self._submit(_label_tiles.nets_task, self.source, c, lo, hi,
-                                                 self.h.tolist(), self.o.tolist(), self.background)
-                                    for c, (lo, hi) in enumerate(self.boxes)])
+    def surfaces(self, out_dir: Path, size, budget, format: str, force: bool, keywords) -> TiledLabelReport:
+        nets = self._nets(size, budget)
         labels = np.unique(np.concatenate([n["labels"] for n in nets] + [np.zeros(0, np.int64)]))
         labels = labels[labels != self.background]
         if len(labels) == 0:
@@ -228,7 +277,7 @@ class _Run:
             self._timed("write", [self._submit(_label_tiles.write_label, int(L),
                                                [n["chunk"] for n in nets if L in n["labels"]],
                                                self.source.shape, self.size, self.grid,
-                                               str(staged / name.name))
+                                               str(staged / name.name), self.to_world)
                                   for L, name in zip(labels, names)])
             if staged.parent == out_dir:
                 for name in names:
