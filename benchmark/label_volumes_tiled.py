@@ -13,7 +13,8 @@ cylinders; a point's distance to the truth is its distance to the nearest of the
 nearest seeds' bisector, every sheet side, every cylinder).
 
 ``label_surfaces_tiled`` runs on a LocalCluster of ``--workers`` single-threaded processes, each
-limited to ``--worker-limit``, once for each chunk size of ``--chunks``; with ``--in-core 1``,
+limited to ``--worker-limit``, once for each chunk size of ``--chunks`` (``auto``: sized so that
+a tile fits 60 % of the limit, where Dask pauses a worker at 80 %); with ``--in-core 1``,
 ``label_surfaces`` on the whole array in this process (on the cores of the workers) too. Each
 label's surface is checked closed and oriented (every directed edge once, its opposite once).
 Printed: the nets' points and triangles, the labels and those closed, each run's time by phase,
@@ -140,13 +141,15 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--size", type=int, default=256)
     parser.add_argument("--cells", type=int, default=480)
-    parser.add_argument("--chunks", type=int, nargs="+", default=[64, 96])
+    parser.add_argument("--chunks", nargs="+", default=["64", "96"],
+                        help="cells per chunk along each axis, or auto (sized by the tiles' memory)")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--worker-limit", default="2GiB")
     parser.add_argument("--in-core", type=int, default=1)
     parser.add_argument("--folder", default=None)
     args = parser.parse_args()
     import distributed
+    from dask.utils import parse_bytes
     import cgal_constrained_fairing as cf
     from cgal_constrained_fairing.tiles import label_surfaces_tiled
     root = Path(tempfile.mkdtemp(dir=args.folder))
@@ -162,16 +165,20 @@ def main():
         with distributed.LocalCluster(n_workers=args.workers, threads_per_worker=1,
                                       memory_limit=args.worker_limit, dashboard_address=None) as cluster, \
                 distributed.Client(cluster) as client:
+            # As benchmark/tiled_fairing.py: Dask pauses a worker at 80 % of its limit.
+            tile_memory = int(0.6 * parse_bytes(args.worker_limit))
             for chunk in args.chunks:
                 clock = time.perf_counter()
                 report = label_surfaces_tiled(volume, root / f"tiled{chunk}", client=client,
-                                              chunk_cells=chunk)
+                                              chunk_cells=None if chunk == "auto" else int(chunk),
+                                              tile_memory=tile_memory)
                 seconds = time.perf_counter() - clock
                 runs[f"tiled {chunk}"] = read_surfaces(root / f"tiled{chunk}", cf)
                 phases = ", ".join(f"{k} {v:.1f}" for k, v in report.seconds.items())
-                print(f"tiled, chunks of {chunk}^3 cells: {seconds:.1f} s ({phases}); {report.chunks} "
-                      f"chunks, {report.sweeps} sweeps, seam motions {[round(m, 4) for m in report.motion]}, "
-                      f"worker peak {report.peak_memory / 2 ** 30:.2f} GiB; {report.points} points, "
+                print(f"tiled, chunks of {report.chunk_cells} cells ({chunk}): {seconds:.1f} s "
+                      f"({phases}); {report.chunks} chunks, {report.sweeps} sweeps, seam motions "
+                      f"{[round(m, 4) for m in report.motion]}, worker peak "
+                      f"{report.peak_memory / 2 ** 30:.2f} GiB; {report.points} points, "
                       f"{report.triangles} triangles, {len(report.labels)} labels")
                 shutil.rmtree(root / f"tiled{chunk}")
         if args.in_core:
