@@ -5,10 +5,16 @@ The chunks' nets, their points named by the voxel grid, are the whole volume's n
 tiled surfaces are the in-core call's triangles with points within 0.1 voxel of its points and
 within their boxes, every label's surface closed and oriented; two chunk sizes agree as
 closely; zarr, TIFF and NIfTI volumes give the array's files; outputs never replace what the
-run did not write.
+run did not write; a lost task or a killed worker changes no file, a full disk or a scheduler
+that cannot be reached leaves none.
 """
 
 import itertools
+import os
+import signal
+import threading
+import time
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -266,6 +272,58 @@ def test_a_task_lost_after_its_write_is_run_again_with_the_same_result(tmp_path,
         assert (tmp_path / "lost" / path.name).read_bytes() == path.read_bytes()
 
 
+def test_a_worker_killed_mid_sweep_leaves_the_result_unchanged(tmp_path):
+    # A worker process killed while it runs a tile's descent: its nanny starts another, Dask
+    # runs the lost task again from the files of the sweep before, and every file is the same
+    # bit for bit.
+    import distributed
+    L = voronoi((20, 18, 36), 5, 4)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster, set_as_default=False) as client:
+        label_surfaces_tiled(L, tmp_path / "kept", client=client, chunk_cells=16)
+        before = client.run(os.getpid)
+        killed = []
+
+        def kill_one_descent():
+            while not killed:
+                for worker, keys in client.processing().items():
+                    if any(str(key).startswith("fair_tile") for key in keys):
+                        os.kill(before[worker], signal.SIGKILL)
+                        killed.append(worker)
+                        return
+                time.sleep(0.01)
+        killer = threading.Thread(target=kill_one_descent, daemon=True)
+        killer.start()
+        label_surfaces_tiled(L, tmp_path / "lost", client=client, chunk_cells=16)
+        killer.join(timeout=10)
+        after = client.run(os.getpid)
+    assert killed and before[killed[0]] not in after.values()
+    names = sorted(p.name for p in (tmp_path / "kept").iterdir())
+    assert names == sorted(p.name for p in (tmp_path / "lost").iterdir())
+    for name in names:
+        assert (tmp_path / "lost" / name).read_bytes() == (tmp_path / "kept" / name).read_bytes()
+
+
+def test_a_scheduler_that_cannot_be_reached_is_a_clear_error(tmp_path, capsys):
+    import dask
+    import socket
+    from cgal_constrained_fairing.tiles._command_line import main
+    np.save(tmp_path / "seg.npy", voronoi((20, 18, 22), 3, 2))
+    with socket.socket() as s:  # a port nothing listens on
+        s.bind(("127.0.0.1", 0))
+        address = f"tcp://127.0.0.1:{s.getsockname()[1]}"
+    (tmp_path / "s").mkdir()
+    (tmp_path / "s" / "label_1.ply").write_bytes(b"an earlier output")
+    with dask.config.set({"distributed.comm.timeouts.connect": "2s"}):
+        assert main([str(tmp_path / "seg.npy"), str(tmp_path / "s"), "--scheduler", address]) == 1
+    said = capsys.readouterr().out
+    assert said.startswith("error: ") and address in said and "nothing written" in said
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s", "seg.npy"]
+    assert [p.name for p in (tmp_path / "s").iterdir()] == ["label_1.ply"]
+    assert (tmp_path / "s" / "label_1.ply").read_bytes() == b"an earlier output"
+
+
 def test_a_full_disk_leaves_no_output(tmp_path, monkeypatch):
     import errno
     import distributed
@@ -339,12 +397,15 @@ def test_command_line(tmp_path, capsys):
 
 def test_chunks_shrink_to_fit_the_tile_memory(volume, client, tmp_path):
     from cgal_constrained_fairing.tiles._label_volumes import BYTES_PER_TRIANGLE
-    report = label_surfaces_tiled(volume, tmp_path / "a", SPACING, client=client, tile_memory="150MB")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the sized chunks fit
+        report = label_surfaces_tiled(volume, tmp_path / "a", SPACING, client=client, tile_memory="150MB")
     assert report.chunks != (1, 1, 1)
     cells = np.prod(np.asarray(volume.shape) + 1)
     density = report.triangles / cells  # the mean, at most the densest chunk's
     size = report.chunk_cells[0]
     assert 16 < size < 45 and (size + 22) ** 3 * density * BYTES_PER_TRIANGLE <= 150e6
-    fixed = label_surfaces_tiled(volume, tmp_path / "b", SPACING, client=client, chunk_cells=48,
-                                 tile_memory="60MB")
+    with pytest.warns(UserWarning, match="more than tile_memory .60000000.; give fewer chunk_cells"):
+        fixed = label_surfaces_tiled(volume, tmp_path / "b", SPACING, client=client, chunk_cells=48,
+                                     tile_memory="60MB")
     assert fixed.chunks == (1, 1, 1)

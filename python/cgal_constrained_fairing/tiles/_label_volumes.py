@@ -6,6 +6,7 @@ import math
 import os
 import shutil
 import time
+import warnings
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Sequence
 
@@ -116,7 +117,8 @@ def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str",
     chunk_cells : int or sequence of 3 ints, optional
         The cells a chunk owns along each axis, at least 16. Default: 128, fewer where the
         densest chunk's nets show that its tile (11 cells more on every side) would hold more
-        than `tile_memory` at about 2,000 bytes per triangle.
+        than `tile_memory` at about 2,000 bytes per triangle. A size given whose tiles
+        would hold more is kept, with a warning.
     tile_memory : str or int
         What a tile's task may hold (``"2GiB"``, ``"500MB"`` or bytes).
     background : int
@@ -156,7 +158,7 @@ def label_surfaces_tiled(volume, out_dir: "os.PathLike[str] | str",
                 affine = source.affine
             run = _Run(folder, source, _voxel_frame(spacing, origin, affine), int(background),
                        running, threads)
-            return run.surfaces(out_dir, size, budget if chunk_cells is None else None, format, force,
+            return run.surfaces(out_dir, size, budget, chunk_cells is not None, format, force,
                                 {} if max_iterations is None else {"max_iterations": int(max_iterations)})
     finally:
         shutil.rmtree(folder)
@@ -200,19 +202,29 @@ class _Run:
         self.boxes = [(np.asarray(c) * size, np.minimum((np.asarray(c) + 1) * size, cells))
                       for c in itertools.product(*[range(g) for g in self.grid])]
 
-    def _nets(self, size: np.ndarray, budget: Optional[int]) -> List[Dict[str, Any]]:
-        """The chunks' nets; with a `budget`, made again once in smaller chunks where the
-        densest chunk's tile would hold more (a chunk's triangles grow with its cells)."""
-        self._layout(size)
-        nets = self._timed("nets", [self._submit(_label_tiles.nets_task, self.source, c, lo, hi,
-                                                 self.h.tolist(), self.o.tolist(), self.background)
-                                    for c, (lo, hi) in enumerate(self.boxes)])
-        density = max(n["triangles"] / np.prod(hi - lo) for n, (lo, hi) in zip(nets, self.boxes))
+    def _nets(self, size: np.ndarray, budget: int, fixed: bool) -> List[Dict[str, Any]]:
+        """The chunks' nets; unless the size is `fixed`, made again in smaller chunks while the
+        densest chunk's tile would hold more than `budget` (smaller chunks' densest is denser,
+        so the size shrinks in a few steps, and ends at the least); a warning where a tile
+        still would."""
         reach = 2 * _label_tiles.REACH
-        if budget is None or density * np.prod(size + reach) * BYTES_PER_TRIANGLE <= budget:
-            return nets
-        fitting = int(np.cbrt(budget / BYTES_PER_TRIANGLE / density)) - reach
-        return self._nets(np.minimum(size, max(fitting, 2 * _label_tiles.SEAM)), None)
+        while True:
+            self._layout(size)
+            nets = self._timed("nets", [self._submit(_label_tiles.nets_task, self.source, c, lo, hi,
+                                                     self.h.tolist(), self.o.tolist(), self.background)
+                                        for c, (lo, hi) in enumerate(self.boxes)])
+            density = max(n["triangles"] / np.prod(hi - lo) for n, (lo, hi) in zip(nets, self.boxes))
+            need = int(density * np.prod(size + reach) * BYTES_PER_TRIANGLE)
+            fitting = int(np.cbrt(budget / BYTES_PER_TRIANGLE / max(density, 1e-9))) - reach
+            smaller = np.minimum(size, max(fitting, 2 * _label_tiles.SEAM))
+            if need <= budget or fixed or (smaller == size).all():
+                break
+            size = smaller
+        if need > budget:
+            warnings.warn(f"the densest chunk's tile of {(size + reach).tolist()} cells needs "
+                          f"about {need} bytes, more than tile_memory ({budget})"
+                          + ("; give fewer chunk_cells" if fixed else ""))
+        return nets
 
     def _timed(self, name: str, futures) -> List[Dict[str, Any]]:
         clock = time.perf_counter()
@@ -223,8 +235,9 @@ class _Run:
     def _submit(self, function, *args):
         return self.client.submit(function, str(self.folder), *args, pure=False, retries=2)
 
-    def surfaces(self, out_dir: Path, size, budget, format: str, force: bool, keywords) -> TiledLabelReport:
-        nets = self._nets(size, budget)
+    def surfaces(self, out_dir: Path, size, budget: int, fixed: bool, format: str, force: bool,
+                 keywords) -> TiledLabelReport:
+        nets = self._nets(size, budget, fixed)
         labels = np.unique(np.concatenate([n["labels"] for n in nets] + [np.zeros(0, np.int64)]))
         labels = labels[labels != self.background]
         if len(labels) == 0:
